@@ -1,0 +1,42 @@
+# Install rules and the relocatable CMake package `snell` (find_package(snell CONFIG)).
+# Included from the root CMakeLists.txt when SNELL_INSTALL is ON.
+include_guard(GLOBAL)
+
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(SNELL_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/snell"
+    CACHE STRING "Where the snell CMake package files are installed (relative to the prefix)")
+mark_as_advanced(SNELL_INSTALL_CMAKEDIR)
+
+# Public headers (math now; runtime and plugin headers later live under include/snell too).
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/"
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
+        FILES_MATCHING PATTERN "*.hpp")
+
+# Targets. [snell::runtime] / [plugins]: append snell_runtime and plugin targets here.
+install(TARGETS snell_math
+        EXPORT snellTargets
+        ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+        LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+        RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+
+install(EXPORT snellTargets
+        NAMESPACE snell::
+        DESTINATION "${SNELL_INSTALL_CMAKEDIR}"
+        FILE snellTargets.cmake)
+
+configure_package_config_file(
+  "${PROJECT_SOURCE_DIR}/cmake/snellConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/snellConfig.cmake"
+  INSTALL_DESTINATION "${SNELL_INSTALL_CMAKEDIR}")
+
+# 0.x: a minor bump may break the API, so only the same major.minor is compatible.
+write_basic_package_version_file(
+  "${PROJECT_BINARY_DIR}/snellConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}"
+  COMPATIBILITY SameMinorVersion)
+
+install(FILES "${PROJECT_BINARY_DIR}/snellConfig.cmake"
+              "${PROJECT_BINARY_DIR}/snellConfigVersion.cmake"
+        DESTINATION "${SNELL_INSTALL_CMAKEDIR}")

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Builds Snell (default preset) and runs the demo "main job"; results go to out/.
+# Usage: bash scripts/demo.sh
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+repo_root="$(pwd)"
+build_dir="$repo_root/build/default"
+out_dir="$repo_root/out"
+
+bash scripts/setup.sh
+
+cmake --preset default
+cmake --build --preset default -j"$(nproc 2>/dev/null || echo 2)"
+
+mkdir -p "$out_dir"
+
+# ==== Main job: math sample ======================================================================
+echo "=== math sample -> out/math-sample.txt ==="
+"$build_dir/samples/math-only/snell-math-sample" | tee "$out_dir/math-sample.txt"
+# ==== End: math sample ===========================================================================
+
+# ==== Main job: demo scenes (later) ==============================================================
+# Render the built-in demo scenes headlessly (lavapipe unless a GPU is present) to out/*.png
+# with the `snell` CLI, e.g.:
+#   "$build_dir/samples/cli/snell" render --scene water --out "$out_dir/water.png"
+# ==== End: demo scenes ===========================================================================
+
+echo "=== demo done; outputs in out/ ==="
+ls -l "$out_dir"
