@@ -105,11 +105,27 @@ TEST_CASE("each face's view + projection lands directions where direction_to_cub
   }
 }
 
-TEST_CASE("a flipped projection would put captures in the wrong place") {
-  // Documents the design note: negating [1][1] mirrors every face vertically.
-  const glm::mat4 flipped = flip_clip_y(cube_face_projection(0.1f, 10.0f, DepthRange::zero_to_one));
-  const glm::vec3 d = glm::normalize(glm::vec3(1.0f, 0.5f, 0.2f));
-  const CubeTexel t = direction_to_cube(d);
-  const glm::vec4 c = flipped * cube_face_view(glm::vec3(0), t.face) * glm::vec4(d, 1.0f);
-  CHECK_FALSE(near(0.5f * c.y / c.w + 0.5f, t.uv.y, 1e-3f));
+TEST_CASE("a flipped projection puts captures in the wrong place on every face") {
+  // Documents the design note: negating [1][1] mirrors every face vertically, and negating the
+  // up vectors as well does not repair it (that also mirrors x).
+  const glm::mat4 proj = cube_face_projection(0.1f, 10.0f, DepthRange::zero_to_one);
+  const glm::mat4 flipped = flip_clip_y(proj);
+  test::Random rng(62);
+  for (const CubeFace f : kFaces) {
+    int wrong_flipped = 0;
+    int wrong_negated_up = 0;
+    for (int i = 0; i < 200; ++i) {
+      const glm::vec2 uv(rng.uniform(0.05f, 0.45f), rng.uniform(0.05f, 0.45f)); // off-centre
+      const glm::vec3 d = cube_to_direction(f, uv);
+      const glm::vec4 a = flipped * cube_face_view(glm::vec3(0), f) * glm::vec4(d, 1.0f);
+      const glm::vec2 ua = 0.5f * glm::vec2(a) / a.w + 0.5f;
+      wrong_flipped += !(near(ua.x, uv.x, 1e-3f) && near(ua.y, uv.y, 1e-3f));
+      const glm::mat4 neg_up_view = look_at(glm::vec3(0), cube_face_forward(f), -cube_face_up(f));
+      const glm::vec4 b = flipped * neg_up_view * glm::vec4(d, 1.0f);
+      const glm::vec2 ub = 0.5f * glm::vec2(b) / b.w + 0.5f;
+      wrong_negated_up += !(near(ub.x, uv.x, 1e-3f) && near(ub.y, uv.y, 1e-3f));
+    }
+    CHECK(wrong_flipped == 200);
+    CHECK(wrong_negated_up == 200);
+  }
 }

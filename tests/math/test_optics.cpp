@@ -51,7 +51,7 @@ TEST_CASE("refract obeys Snell's law and stays in the plane of incidence") {
   CHECK(refracted > 7000);
 }
 
-TEST_CASE("refract at normal incidence passes straight through; eta 1 changes nothing") {
+TEST_CASE("refract at normal incidence passes straight through, and eta 1 changes nothing") {
   const auto t = refract({0, -1, 0}, {0, 1, 0}, 1.0f / 1.5f);
   REQUIRE(t.has_value());
   CHECK(near(*t, {0, -1, 0}, 1e-6f));

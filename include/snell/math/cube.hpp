@@ -119,8 +119,9 @@ struct CubeTexel {
 /// View matrix of the camera at `center` that renders `face`. With `cube_face_projection` and a
 /// standard (positive-height, not flipped) Vulkan viewport, a direction `d` lands at
 /// `0.5 * ndc.xy + 0.5 == direction_to_cube(d).uv` on that face, so a sampler reads the capture
-/// back where it belongs. Note the face images look upside down compared with a y-flipped
-/// main view: that is the cube-map convention, not a bug. Right-handed, determinant +1; a
+/// back where it belongs. Seen as pictures, the side faces have row 0 toward world +Y but are
+/// mirrored left-right compared with a photo taken along the same axis: that is the cube-map
+/// convention (the sampler looks from the inside), not a bug. Right-handed, determinant +1; a
 /// pipeline drawing a face must use the opposite front face of a y-flipped main view.
 [[nodiscard]] inline glm::mat4 cube_face_view(glm::vec3 center, CubeFace face) noexcept {
   const glm::vec3 forward = cube_face_forward(face);

@@ -23,8 +23,8 @@ struct Plane {
   float d = 0.0f;                     ///< Offset: signed distance of the origin. Default 0.
 };
 
-/// True when the plane has no usable normal: its length is zero (or below 1e-20 squared) or
-/// any component is not finite.
+/// True when the plane has no usable normal: |normal|^2 <= 1e-20 (|normal| <= 1e-10), or the
+/// normal or `d` is not finite.
 [[nodiscard]] inline bool is_degenerate(const Plane& plane) noexcept {
   const float len2 = glm::dot(plane.normal, plane.normal);
   return !(len2 > 1e-20f) || !std::isfinite(len2) || !std::isfinite(plane.d);
@@ -53,7 +53,7 @@ struct Plane {
 
 /// Signed distance of `p` to the plane, in world units when the plane is normalised:
 /// positive on the side the normal points to, zero on the plane. (For an unnormalised plane it
-/// is the distance times |normal|; for a degenerate one it is `d`.)
+/// is the distance times |normal|; for a zero normal it is `d`, for a non-finite one NaN.)
 [[nodiscard]] inline float signed_distance(const Plane& plane, glm::vec3 p) noexcept {
   return glm::dot(plane.normal, p) + plane.d;
 }
