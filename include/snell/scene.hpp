@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace snell {
@@ -114,6 +116,16 @@ struct Sky {
   glm::vec3 ground{0.30f, 0.28f, 0.25f};  ///< Linear colour straight down.
 };
 
+/// A named place in a scene that effects can attach to (the pool's water surface, the window
+/// quad, the centre sphere of a cube-map probe). Built-in scenes define them; effects look them
+/// up by name so that a scene and an effect need not know each other.
+struct Anchor {
+  std::string name;          ///< E.g. "water", "window", "probe".
+  glm::vec3 position{0.0f};  ///< World-space centre.
+  glm::vec3 size{0.0f};      ///< World-space extent (full width, height, depth).
+  int object = -1;           ///< The object it belongs to (index into Scene::objects), or -1.
+};
+
 /// A complete scene.
 struct Scene {
   std::string name;
@@ -122,8 +134,11 @@ struct Scene {
   std::vector<Image> images;
   std::vector<Object> objects;
   std::vector<CameraDesc> cameras; ///< cameras[0] is the default view when present.
+  std::vector<Anchor> anchors;     ///< Named places for effects (see Anchor).
   DirectionalLight light;
   Sky sky;
+  /// The anchor called `name`, or nullptr.
+  [[nodiscard]] const Anchor* find_anchor(std::string_view name) const;
   /// Axis-aligned bounds of all objects at time 0 (min, max); empty scene: zero box.
   [[nodiscard]] std::pair<glm::vec3, glm::vec3> bounds() const;
 };
@@ -138,6 +153,12 @@ struct GltfLimits {
   std::uint64_t max_total_vertices = 16ull << 20;     ///< Over all meshes. 16 Mi.
   std::uint64_t max_total_indices = 48ull << 20;      ///< Over all meshes. 48 Mi.
   std::uint32_t max_node_depth = 64;                  ///< Deepest node hierarchy accepted. 64.
+  /// Sum of the byteLength of all buffers. 1 GiB. (Many buffers may name the same file.)
+  std::uint64_t max_total_buffer_bytes = 1ull << 30;
+  /// Sum of width * height over all decoded images. 256 Mi (1 GiB as RGBA8).
+  std::uint64_t max_total_image_pixels = 256ull << 20;
+  /// Objects created (node instances times the triangle primitives of their mesh). 1 Mi.
+  std::uint64_t max_objects = 1ull << 20;
 };
 
 /// Loads a glTF 2.0 file (`.gltf` with external or embedded buffers, or `.glb`).

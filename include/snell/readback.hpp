@@ -1,0 +1,43 @@
+// Snell runtime: reading targets back to the CPU, and writing PNG files.
+#pragma once
+
+#include <snell/images.hpp>
+#include <snell/scene.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace snell {
+
+/// A float RGBA image on the CPU, rows top first (linear values for float targets).
+struct FloatImage {
+  std::uint32_t width = 0;  ///< Pixels.
+  std::uint32_t height = 0; ///< Pixels.
+  std::vector<float> rgba;  ///< width * height * 4 values.
+};
+
+/// Reads mip `level` of a render target's colour image as stored: RGBA8 bytes for 8-bit formats
+/// (sRGB-encoded for rgba8_srgb, linear for rgba8_unorm); float targets are tone-mapped with
+/// `tonemap`. The target must be in its finished state (after end_rendering), and no command
+/// buffer that uses it may be pending. Errors: invalid_argument for a level out of range.
+[[nodiscard]] Result<Image> read_rgba8(const Context& ctx, const RenderTarget& target,
+                                       std::uint32_t level = 0);
+/// Reads mip `level` as floats (8-bit formats are converted to [0,1], sRGB decoded to linear).
+[[nodiscard]] Result<FloatImage> read_float(const Context& ctx, const RenderTarget& target,
+                                            std::uint32_t level = 0);
+/// Reads one face (layer 0..5) of a cube target at mip `level` (after end_capture).
+[[nodiscard]] Result<Image> read_cube_face_rgba8(const Context& ctx, const CubeTarget& target,
+                                                 std::uint32_t face, std::uint32_t level = 0);
+/// Reads a render target's depth image (after end_rendering) as floats in [0,1].
+[[nodiscard]] Result<std::vector<float>> read_depth(const Context& ctx, const RenderTarget& target);
+
+/// Tone-maps linear HDR values to sRGB-encoded RGBA8: `exposure` multiplies, then the
+/// Reinhard-Jodie curve, then the sRGB transfer function. Alpha is clamped to [0,1].
+[[nodiscard]] Image tonemap(const FloatImage& image, float exposure = 1.0f);
+
+/// Writes an RGBA8 image as PNG (rows top first). Errors name the path: io_error when the
+/// file cannot be written, invalid_argument for an empty or inconsistent image.
+[[nodiscard]] Result<void> write_png(const std::filesystem::path& path, const Image& image);
+
+} // namespace snell

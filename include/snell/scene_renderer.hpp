@@ -1,0 +1,45 @@
+// Snell runtime: the embedded default host's forward renderer (a SceneSource).
+#pragma once
+
+#include <snell/context.hpp>
+#include <snell/scene.hpp>
+#include <snell/scene_source.hpp>
+
+#include <memory>
+
+namespace snell {
+
+/// Draws a Scene: ambient + Lambert + normalised Blinn-Phong from one directional light,
+/// base colour / normal / emissive textures, alpha mask, and a gradient sky drawn behind
+/// everything. Honours SceneView's clip plane (gl_ClipDistance), layer mask, front-face flip
+/// and multiview. Pipelines are created lazily per (colour format, depth format, view mask).
+///
+/// Per-view data lives in a ring of `kMaxViewsInFlight` uniform blocks: at most that many
+/// draw_scene calls may be recorded between two waits on the GPU.
+class SceneRenderer : public SceneSource {
+public:
+  static constexpr std::uint32_t kMaxViewsInFlight = 256;
+
+  /// Uploads `scene` (meshes, textures) to the GPU. The scene is copied; the renderer keeps
+  /// no reference to it. Errors name the mesh or image that failed.
+  [[nodiscard]] static Result<SceneRenderer> create(const Context& ctx, const Scene& scene);
+
+  SceneRenderer(SceneRenderer&&) noexcept;
+  SceneRenderer& operator=(SceneRenderer&&) noexcept;
+  ~SceneRenderer() override;
+
+  void draw_scene(VkCommandBuffer cmd, const SceneView& view) override;
+
+  /// The scene as uploaded (objects, cameras, light, anchors).
+  [[nodiscard]] const Scene& scene() const;
+  /// Errors recorded while drawing (pipeline creation failures); empty when all went well.
+  [[nodiscard]] const std::string& last_error() const;
+
+  struct Impl;
+
+private:
+  explicit SceneRenderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace snell

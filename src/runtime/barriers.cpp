@@ -1,0 +1,80 @@
+#include "barriers.hpp"
+#include "vk_util.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace snell::detail {
+
+void barrier(VkCommandBuffer cmd, const ImageBarrier* barriers, std::uint32_t count) {
+  std::vector<VkImageMemoryBarrier2> vk(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const ImageBarrier& b = barriers[i];
+    VkImageMemoryBarrier2& v = vk[i];
+    v = vk_init<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
+    v.srcStageMask = b.src_stage;
+    v.srcAccessMask = b.src_access;
+    v.dstStageMask = b.dst_stage;
+    v.dstAccessMask = b.dst_access;
+    v.oldLayout = b.old_layout;
+    v.newLayout = b.new_layout;
+    v.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    v.image = b.image;
+    v.subresourceRange = {b.aspect, b.base_mip, b.mip_count, b.base_layer, b.layer_count};
+  }
+  VkDependencyInfo dep = vk_init<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
+  dep.imageMemoryBarrierCount = count;
+  dep.pImageMemoryBarriers = vk.data();
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std::uint32_t height,
+                   std::uint32_t mips, std::uint32_t layers, VkImageLayout level0_layout,
+                   VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access) {
+  // Level 0 becomes a blit source; the other levels are discarded and become blit targets.
+  const ImageBarrier start[] = {
+      {image, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers, level0_layout,
+       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, src_stage, src_access, VK_PIPELINE_STAGE_2_BLIT_BIT,
+       VK_ACCESS_2_TRANSFER_READ_BIT},
+      {image, VK_IMAGE_ASPECT_COLOR_BIT, 1, mips - 1, 0, layers, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+  };
+  barrier(cmd, start, mips > 1 ? 2 : 1);
+  std::int32_t w = static_cast<std::int32_t>(width);
+  std::int32_t h = static_cast<std::int32_t>(height);
+  for (std::uint32_t level = 1; level < mips; ++level) {
+    const std::int32_t nw = std::max(1, w / 2);
+    const std::int32_t nh = std::max(1, h / 2);
+    VkImageBlit2 region = vk_init<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers};
+    region.srcOffsets[1] = {w, h, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
+    region.dstOffsets[1] = {nw, nh, 1};
+    VkBlitImageInfo2 blit = vk_init<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
+    blit.srcImage = image;
+    blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    blit.dstImage = image;
+    blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    blit.regionCount = 1;
+    blit.pRegions = &region;
+    blit.filter = VK_FILTER_LINEAR;
+    vkCmdBlitImage2(cmd, &blit);
+    // The level just written becomes the source of the next one.
+    barrier(cmd, ImageBarrier{image, VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers,
+                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                              VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                              VK_ACCESS_2_TRANSFER_READ_BIT});
+    w = nw;
+    h = nh;
+  }
+  barrier(cmd, ImageBarrier{image, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips, 0, layers,
+                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                            kReadStages, kReadAccess});
+}
+
+} // namespace snell::detail

@@ -1,0 +1,41 @@
+// Internal: synchronization2 image barriers and mip generation shared by all image types.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+namespace snell::detail {
+
+/// One image memory barrier (synchronization2) over a subresource range.
+struct ImageBarrier {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  std::uint32_t base_mip = 0, mip_count = VK_REMAINING_MIP_LEVELS;
+  std::uint32_t base_layer = 0, layer_count = VK_REMAINING_ARRAY_LAYERS;
+  VkImageLayout old_layout = VK_IMAGE_LAYOUT_UNDEFINED, new_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkPipelineStageFlags2 src_stage = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 src_access = VK_ACCESS_2_NONE;
+  VkPipelineStageFlags2 dst_stage = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 dst_access = VK_ACCESS_2_NONE;
+};
+
+/// Records the barriers with one vkCmdPipelineBarrier2.
+void barrier(VkCommandBuffer cmd, const ImageBarrier* barriers, std::uint32_t count);
+inline void barrier(VkCommandBuffer cmd, const ImageBarrier& b) { barrier(cmd, &b, 1); }
+
+/// Stages/accesses of every later reader of a finished target (shaders, copies, blits).
+inline constexpr VkPipelineStageFlags2 kReadStages =
+    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+inline constexpr VkAccessFlags2 kReadAccess =
+    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT;
+
+/// Generates mip levels 1..mips-1 of `layers` layers by linear blits from level 0.
+/// Expects level 0 in `level0_layout` after writes in `src_stage`/`src_access`; leaves every
+/// level in SHADER_READ_ONLY_OPTIMAL, visible to kReadStages.
+void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std::uint32_t height,
+                   std::uint32_t mips, std::uint32_t layers, VkImageLayout level0_layout,
+                   VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access);
+
+} // namespace snell::detail

@@ -1,0 +1,46 @@
+// Internal: the state behind snell::Context.
+#pragma once
+
+#include <snell/context.hpp>
+
+#include <atomic>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace snell {
+
+struct Context::Impl {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  std::uint32_t queue_family = 0;
+  bool owns = false;
+  DeviceInfo info;
+  VkPhysicalDeviceMemoryProperties memory{};
+  VkPhysicalDeviceLimits limits{};
+
+  // Validation (owned instances only).
+  bool validation = false;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  std::atomic<std::uint32_t> errors{0};
+  std::atomic<std::uint32_t> warnings{0};
+  mutable std::mutex messages_mutex;
+  std::vector<std::string> messages;
+
+  // One-shot submissions.
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;
+  mutable std::mutex submit_mutex;
+
+  ~Impl();
+
+  /// See Context::submit_and_wait / Context::find_memory_type.
+  Result<void> submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+  Result<std::uint32_t> find_memory_type(std::uint32_t type_bits,
+                                         VkMemoryPropertyFlags properties) const;
+};
+
+} // namespace snell

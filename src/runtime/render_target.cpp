@@ -1,0 +1,195 @@
+// Render targets: colour (+ depth) images for dynamic rendering, sampled afterwards.
+#include <snell/images.hpp>
+
+#include "barriers.hpp"
+#include "vk_util.hpp"
+#include "image_alloc.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace snell {
+
+using detail::vk_init;
+
+using detail::ImageBarrier;
+
+std::uint32_t full_mip_count(std::uint32_t width, std::uint32_t height) {
+  std::uint32_t n = 1;
+  for (std::uint32_t s = std::max(width, height); s > 1; s >>= 1) {
+    ++n;
+  }
+  return n;
+}
+
+VkFormat to_vk_format(ColorFormat format) {
+  switch (format) {
+  case ColorFormat::rgba8_unorm:
+    return VK_FORMAT_R8G8B8A8_UNORM;
+  case ColorFormat::rgba8_srgb:
+    return VK_FORMAT_R8G8B8A8_SRGB;
+  case ColorFormat::rgba16_float:
+    return VK_FORMAT_R16G16B16A16_SFLOAT;
+  }
+  return VK_FORMAT_R8G8B8A8_UNORM;
+}
+
+Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTargetDesc& desc) {
+  const Context::Impl& ctx = *context.impl();
+  const std::string name = desc.debug_name != nullptr ? desc.debug_name : "render target";
+  if (auto r = detail::check_extent(ctx, name + " (RenderTargetDesc width x height)", desc.width,
+                                    desc.height);
+      !r) {
+    return r.error();
+  }
+  RenderTarget t;
+  t.ctx_ = &ctx;
+  t.width_ = desc.width;
+  t.height_ = desc.height;
+  t.format_ = desc.color;
+  t.mips_ = desc.mips ? full_mip_count(desc.width, desc.height) : 1;
+  VkImageCreateInfo ci = vk_init<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+  ci.imageType = VK_IMAGE_TYPE_2D;
+  ci.format = to_vk_format(desc.color);
+  ci.extent = {desc.width, desc.height, 1};
+  ci.mipLevels = t.mips_;
+  ci.arrayLayers = 1;
+  ci.samples = VK_SAMPLE_COUNT_1_BIT;
+  ci.tiling = VK_IMAGE_TILING_OPTIMAL;
+  ci.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  ci.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  if (auto r = detail::create_image(ctx, ci, t.color_, t.color_memory_, name + " colour"); !r) {
+    return r.error();
+  }
+  auto view = detail::create_view(ctx, t.color_, VK_IMAGE_VIEW_TYPE_2D, ci.format,
+                                  VK_IMAGE_ASPECT_COLOR_BIT, 0, t.mips_, 0, 1, name);
+  if (!view) {
+    return view.error();
+  }
+  t.color_view_ = *view;
+  view = detail::create_view(ctx, t.color_, VK_IMAGE_VIEW_TYPE_2D, ci.format,
+                             VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, name);
+  if (!view) {
+    return view.error();
+  }
+  t.color_level0_view_ = *view;
+  if (desc.depth) {
+    ci.format = VK_FORMAT_D32_SFLOAT;
+    ci.mipLevels = 1;
+    ci.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+               VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    if (auto r = detail::create_image(ctx, ci, t.depth_, t.depth_memory_, name + " depth"); !r) {
+      return r.error();
+    }
+    view = detail::create_view(ctx, t.depth_, VK_IMAGE_VIEW_TYPE_2D, ci.format,
+                               VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, name);
+    if (!view) {
+      return view.error();
+    }
+    t.depth_view_ = *view;
+  }
+  return t;
+}
+
+RenderTarget::RenderTarget(RenderTarget&& other) noexcept { swap(other); }
+RenderTarget& RenderTarget::operator=(RenderTarget&& other) noexcept {
+  RenderTarget moved(std::move(other));
+  swap(moved);
+  return *this;
+}
+RenderTarget::~RenderTarget() { reset(); }
+
+void RenderTarget::swap(RenderTarget& o) noexcept {
+  std::swap(ctx_, o.ctx_);
+  std::swap(width_, o.width_);
+  std::swap(height_, o.height_);
+  std::swap(mips_, o.mips_);
+  std::swap(format_, o.format_);
+  std::swap(color_, o.color_);
+  std::swap(depth_, o.depth_);
+  std::swap(color_memory_, o.color_memory_);
+  std::swap(depth_memory_, o.depth_memory_);
+  std::swap(color_view_, o.color_view_);
+  std::swap(color_level0_view_, o.color_level0_view_);
+  std::swap(depth_view_, o.depth_view_);
+}
+
+void RenderTarget::reset() {
+  detail::destroy(ctx_, color_view_);
+  detail::destroy(ctx_, color_level0_view_);
+  detail::destroy(ctx_, depth_view_);
+  detail::destroy(ctx_, color_, color_memory_);
+  detail::destroy(ctx_, depth_, depth_memory_);
+  ctx_ = nullptr;
+}
+
+void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
+                                   float clear_depth) const {
+  // Contents are cleared, so the old layout is UNDEFINED; the barrier still orders this frame's
+  // writes after earlier reads of the previous contents (write-after-read).
+  ImageBarrier barriers[2] = {
+      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT},
+      {depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+           VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT},
+  };
+  detail::barrier(cmd, barriers, depth_ != VK_NULL_HANDLE ? 2 : 1);
+
+  VkRenderingAttachmentInfo color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  color.imageView = color_level0_view_;
+  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
+  VkRenderingAttachmentInfo depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  depth.imageView = depth_view_;
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth.clearValue.depthStencil = {clear_depth, 0};
+  VkRenderingInfo ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+  ri.renderArea = {{0, 0}, {width_, height_}};
+  ri.layerCount = 1;
+  ri.colorAttachmentCount = 1;
+  ri.pColorAttachments = &color;
+  ri.pDepthAttachment = depth_ != VK_NULL_HANDLE ? &depth : nullptr;
+  vkCmdBeginRendering(cmd, &ri);
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(width_), static_cast<float>(height_),
+                            0.0f, 1.0f};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  const VkRect2D scissor{{0, 0}, {width_, height_}};
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void RenderTarget::end_rendering(VkCommandBuffer cmd) const {
+  vkCmdEndRendering(cmd);
+  if (mips_ > 1) {
+    detail::generate_mips(cmd, color_, width_, height_, mips_, 1,
+                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+  } else {
+    detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
+                                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, detail::kReadStages,
+                                      detail::kReadAccess});
+  }
+  if (depth_ != VK_NULL_HANDLE) {
+    detail::barrier(cmd, ImageBarrier{depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1,
+                                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                                      detail::kReadStages, detail::kReadAccess});
+  }
+}
+
+} // namespace snell

@@ -1,0 +1,117 @@
+// Cube capture: six coloured markers on the six axes land on their faces where
+// direction_to_cube predicts, with the per-face path and the multiview path.
+#include "gpu_fixture.hpp"
+
+#include <snell/math.hpp>
+
+using namespace snell;
+
+namespace {
+
+const glm::vec3 kColors[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}};
+
+Scene marker_scene(glm::vec3 center, glm::vec3 offsets[6]) {
+  Scene scene = test::empty_dark_scene();
+  for (int f = 0; f < 6; ++f) {
+    const glm::vec3 axis = cube_face_forward(static_cast<CubeFace>(f));
+    // Off the face centre on purpose, so a mirrored or rotated face would misplace it.
+    const glm::vec3 side = glm::vec3(axis.y != 0 ? 0.9f : 0.0f, axis.y == 0 ? 0.7f : 0.0f,
+                                     axis.x != 0 ? -0.8f : 0.6f);
+    offsets[f] = 3.0f * axis + side;
+    test::add_object(scene, test::make_box_mesh(glm::vec3(0.12f),
+                                                test::add_emissive_material(scene, kColors[f])),
+                     center + offsets[f]);
+  }
+  return scene;
+}
+
+void check_faces(Context& ctx, const CubeTarget& cube, const glm::vec3 offsets[6],
+                 const char* name) {
+  const float size = static_cast<float>(cube.size());
+  for (std::uint32_t f = 0; f < 6; ++f) {
+    auto image = read_cube_face_rgba8(ctx, cube, f);
+    REQUIRE(image.has_value());
+    test::save_png(*image, std::string(name) + "_face" + std::to_string(f));
+    const CubeTexel expected = direction_to_cube(offsets[f]);
+    REQUIRE(static_cast<std::uint32_t>(expected.face) == f);
+    const test::Blob blob = test::find_color(*image, kColors[f]);
+    CAPTURE(f);
+    CAPTURE(blob.centroid);
+    CAPTURE(expected.uv * size);
+    REQUIRE(blob.count > 4);
+    CHECK(glm::length(blob.centroid - expected.uv * size) <= 1.0f);
+    for (std::uint32_t other = 0; other < 6; ++other) { // no marker on the wrong face
+      if (other != f) {
+        CHECK(test::find_color(*image, kColors[other]).count == 0);
+      }
+    }
+  }
+}
+
+} // namespace
+
+TEST_CASE("cube capture: per-face passes put each marker where direction_to_cube says") {
+  test::GpuFixture gpu;
+  const glm::vec3 center(0.5f, 1.0f, -0.25f);
+  glm::vec3 offsets[6];
+  const Scene scene = marker_scene(center, offsets);
+  auto renderer = SceneRenderer::create(gpu.ctx(), scene);
+  REQUIRE(renderer.has_value());
+  auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{64, ColorFormat::rgba8_unorm, true});
+  REQUIRE(cube.has_value());
+  const glm::mat4 proj = cube_face_projection(0.1f, 50.0f, DepthRange::zero_to_one);
+  const float clear[4] = {0, 0, 0, 1};
+  REQUIRE(gpu.ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+    cube->begin_capture(cmd);
+    for (std::uint32_t f = 0; f < 6; ++f) {
+      SceneView v;
+      v.view = cube_face_view(center, static_cast<CubeFace>(f));
+      v.proj = proj;
+      v.eye = center;
+      v.layer_mask = layer::all;
+      v.flip_front_face = needs_front_face_flip(v.view, v.proj);
+      v.extent = {cube->size(), cube->size()};
+      v.color_format = to_vk_format(cube->color_format());
+      cube->begin_face(cmd, f, clear);
+      renderer->draw_scene(cmd, v);
+      cube->end_face(cmd);
+    }
+    cube->end_capture(cmd);
+  }));
+  CHECK(renderer->last_error().empty());
+  check_faces(gpu.ctx(), *cube, offsets, "cube_per_face");
+}
+
+TEST_CASE("cube capture: one multiview pass matches the per-face result") {
+  test::GpuFixture gpu;
+  const glm::vec3 center(0.0f, 0.0f, 0.0f);
+  glm::vec3 offsets[6];
+  const Scene scene = marker_scene(center, offsets);
+  auto renderer = SceneRenderer::create(gpu.ctx(), scene);
+  REQUIRE(renderer.has_value());
+  auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{64, ColorFormat::rgba8_unorm, false});
+  REQUIRE(cube.has_value());
+  const glm::mat4 proj = cube_face_projection(0.1f, 50.0f, DepthRange::zero_to_one);
+  SceneView v;
+  v.proj = proj;
+  v.eye = center;
+  v.layer_mask = layer::all;
+  // Every face view has det +1 and an unflipped projection: one front face for all six.
+  v.flip_front_face = needs_front_face_flip(cube_face_view(center, CubeFace::pos_x), proj);
+  v.view_mask = 0x3F;
+  for (std::size_t f = 0; f < 6; ++f) {
+    v.multiview_view_proj[f] = proj * cube_face_view(center, static_cast<CubeFace>(f));
+  }
+  v.extent = {cube->size(), cube->size()};
+  v.color_format = to_vk_format(cube->color_format());
+  const float clear[4] = {0, 0, 0, 1};
+  REQUIRE(gpu.ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+    cube->begin_capture(cmd);
+    cube->begin_multiview(cmd, clear);
+    renderer->draw_scene(cmd, v);
+    cube->end_multiview(cmd);
+    cube->end_capture(cmd);
+  }));
+  CHECK(renderer->last_error().empty());
+  check_faces(gpu.ctx(), *cube, offsets, "cube_multiview");
+}
