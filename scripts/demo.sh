@@ -20,10 +20,13 @@ echo "=== math sample -> out/math-sample.txt ==="
 "$build_dir/samples/math-only/snell-math-sample" | tee "$out_dir/math-sample.txt"
 # ==== End: math sample ===========================================================================
 
-# ==== Main job: demo scenes (later) ==============================================================
-# Render the built-in demo scenes headlessly (lavapipe unless a GPU is present) to out/*.png
-# with the `snell` CLI, e.g.:
-#   "$build_dir/samples/cli/snell" render --scene water --out "$out_dir/water.png"
+# ==== Main job: demo scenes ======================================================================
+# Renders the built-in demo scenes headlessly (lavapipe unless a GPU is present; SNELL_DEVICE
+# chooses) to out/*.png with the `snell` CLI.
+for scene in pool window spheres; do
+  echo "=== render $scene -> out/$scene.png ==="
+  "$build_dir/samples/cli/snell" render --scene "$scene" --size 1280x720 --out "$out_dir/$scene.png"
+done
 # ==== End: demo scenes ===========================================================================
 
 echo "=== demo done; outputs in out/ ==="

@@ -66,6 +66,12 @@ public:
   /// mips, generates the chain first by linear blits.
   void end_rendering(VkCommandBuffer cmd) const;
 
+  /// Renders on top of the finished colour (level 0, no depth): LOAD instead of CLEAR, for
+  /// overlays such as debug thumbnails. Pair with end_overlay.
+  void begin_overlay(VkCommandBuffer cmd) const;
+  /// Ends an overlay and returns colour to SHADER_READ_ONLY_OPTIMAL (regenerating mips).
+  void end_overlay(VkCommandBuffer cmd) const;
+
   [[nodiscard]] std::uint32_t width() const { return width_; }
   [[nodiscard]] std::uint32_t height() const { return height_; }
   [[nodiscard]] std::uint32_t mip_levels() const { return mips_; }
@@ -79,6 +85,8 @@ public:
 
 private:
   void reset();
+  /// Ends the rendering and finishes colour (mips, SHADER_READ_ONLY_OPTIMAL).
+  void finish_color(VkCommandBuffer cmd) const;
   const Context::Impl* ctx_ = nullptr;
   std::uint32_t width_ = 0, height_ = 0, mips_ = 1;
   ColorFormat format_ = ColorFormat::rgba8_unorm;

@@ -32,6 +32,13 @@ struct FloatImage {
 /// Reads a render target's depth image (after end_rendering) as floats in [0,1].
 [[nodiscard]] Result<std::vector<float>> read_depth(const Context& ctx, const RenderTarget& target);
 
+namespace detail {
+/// Internal: the readbacks on the context's state (for objects that keep only that).
+Result<Image> read_rgba8(const Context::Impl& ctx, const RenderTarget& target, std::uint32_t level);
+Result<FloatImage> read_float(const Context::Impl& ctx, const RenderTarget& target,
+                              std::uint32_t level);
+} // namespace detail
+
 /// Tone-maps linear HDR values to sRGB-encoded RGBA8: `exposure` multiplies, then the
 /// Reinhard-Jodie curve, then the sRGB transfer function. Alpha is clamped to [0,1].
 [[nodiscard]] Image tonemap(const FloatImage& image, float exposure = 1.0f);

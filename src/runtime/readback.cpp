@@ -97,6 +97,15 @@ Result<FloatImage> to_float(const std::vector<std::uint8_t>& bytes, ColorFormat 
 } // namespace
 
 Result<Image> read_rgba8(const Context& ctx, const RenderTarget& target, std::uint32_t level) {
+  return detail::read_rgba8(*ctx.impl(), target, level);
+}
+
+Result<FloatImage> read_float(const Context& ctx, const RenderTarget& target, std::uint32_t level) {
+  return detail::read_float(*ctx.impl(), target, level);
+}
+
+Result<Image> detail::read_rgba8(const Context::Impl& ctx, const RenderTarget& target,
+                                 std::uint32_t level) {
   if (!target || level >= target.mip_levels()) {
     return fail(ErrorCode::invalid_argument, "read_rgba8: level " + std::to_string(level) +
                                                  " out of range (target has " +
@@ -105,13 +114,13 @@ Result<Image> read_rgba8(const Context& ctx, const RenderTarget& target, std::ui
   const std::uint32_t w = level_extent(target.width(), level);
   const std::uint32_t h = level_extent(target.height(), level);
   if (target.color_format() == ColorFormat::rgba16_float) {
-    auto f = read_float(ctx, target, level);
+    auto f = detail::read_float(ctx, target, level);
     if (!f) {
       return f.error();
     }
     return tonemap(*f);
   }
-  auto bytes = read_subresource(*ctx.impl(), target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h,
+  auto bytes = read_subresource(ctx, target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h,
                                 level, 0, 4);
   if (!bytes) {
     return bytes.error();
@@ -125,7 +134,8 @@ Result<Image> read_rgba8(const Context& ctx, const RenderTarget& target, std::ui
   return out;
 }
 
-Result<FloatImage> read_float(const Context& ctx, const RenderTarget& target, std::uint32_t level) {
+Result<FloatImage> detail::read_float(const Context::Impl& ctx, const RenderTarget& target,
+                                      std::uint32_t level) {
   if (!target || level >= target.mip_levels()) {
     return fail(ErrorCode::invalid_argument, "read_float: level " + std::to_string(level) +
                                                  " out of range (target has " +
@@ -134,7 +144,7 @@ Result<FloatImage> read_float(const Context& ctx, const RenderTarget& target, st
   const std::uint32_t w = level_extent(target.width(), level);
   const std::uint32_t h = level_extent(target.height(), level);
   const std::uint32_t texel = target.color_format() == ColorFormat::rgba16_float ? 8 : 4;
-  auto bytes = read_subresource(*ctx.impl(), target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h,
+  auto bytes = read_subresource(ctx, target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h,
                                 level, 0, texel);
   if (!bytes) {
     return bytes.error();

@@ -167,7 +167,35 @@ void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void RenderTarget::end_rendering(VkCommandBuffer cmd) const {
+void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
+  detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages,
+                                    VK_ACCESS_2_NONE,
+                                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                                        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+  auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  color.imageView = color_level0_view_;
+  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+  ri.renderArea = {{0, 0}, {width_, height_}};
+  ri.layerCount = 1;
+  ri.colorAttachmentCount = 1;
+  ri.pColorAttachments = &color;
+  vkCmdBeginRendering(cmd, &ri);
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(width_), static_cast<float>(height_),
+                            0.0f, 1.0f};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  const VkRect2D scissor{{0, 0}, {width_, height_}};
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void RenderTarget::end_overlay(VkCommandBuffer cmd) const { finish_color(cmd); }
+
+void RenderTarget::finish_color(VkCommandBuffer cmd) const {
   vkCmdEndRendering(cmd);
   if (mips_ > 1) {
     detail::generate_mips(cmd, color_, width_, height_, mips_, 1,
@@ -182,6 +210,10 @@ void RenderTarget::end_rendering(VkCommandBuffer cmd) const {
                                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, detail::kReadStages,
                                       detail::kReadAccess});
   }
+}
+
+void RenderTarget::end_rendering(VkCommandBuffer cmd) const {
+  finish_color(cmd);
   if (depth_ != VK_NULL_HANDLE) {
     detail::barrier(cmd, ImageBarrier{depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1,
                                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,

@@ -54,6 +54,12 @@ public:
       return std::optional<Mesh>{};
     }
     const GltfLimits& limits = ctx_.limits;
+    if (Result<void> r = fits(model_.accessors[static_cast<std::size_t>(position_accessor)].count,
+                              totals_.vertices, limits.max_total_vertices,
+                              "POSITION", "max_total_vertices");
+        !r) {
+      return r.error();
+    }
     Result<std::vector<float>> positions =
         read_float_accessor(model_, position_accessor, TINYGLTF_TYPE_VEC3, what_ + " POSITION",
                             room(limits.max_total_vertices, totals_.vertices), ctx_);
@@ -110,6 +116,19 @@ public:
   }
 
 private:
+  // Checks, before anything is allocated, that `count` more elements keep the total within
+  // GltfLimits::<limit_name> = `limit`.
+  Result<void> fits(std::uint64_t count, std::uint64_t used, std::uint64_t limit,
+                    const char* what, const char* limit_name) const {
+    if (count > room(limit, used)) {
+      return ctx_.fail(ErrorCode::limit_exceeded,
+                       what_ + " " + what + ": " + std::to_string(count) + " elements (" +
+                           std::to_string(used) + " already loaded) exceed GltfLimits::" +
+                           limit_name + " = " + std::to_string(limit) + " over all meshes");
+    }
+    return {};
+  }
+
   int attribute(const char* semantic) const {
     const auto it = prim_.attributes.find(semantic);
     return it == prim_.attributes.end() ? -1 : it->second;
@@ -129,6 +148,12 @@ private:
         implicit[i] = static_cast<std::uint32_t>(i);
       }
       return implicit;
+    }
+    if (Result<void> r = fits(model_.accessors[static_cast<std::size_t>(prim_.indices)].count,
+                              totals_.indices, ctx_.limits.max_total_indices, "indices",
+                              "max_total_indices");
+        !r) {
+      return r.error();
     }
     Result<std::vector<std::uint32_t>> indices =
         read_index_accessor(model_, prim_.indices, what_ + " indices", index_room, ctx_);

@@ -1,0 +1,186 @@
+#include "cli_args.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace snell::cli {
+namespace {
+
+Result<float> parse_float(const std::string& text, const std::string& what) {
+  errno = 0;
+  char* end = nullptr;
+  const float v = std::strtof(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v)) {
+    return fail(ErrorCode::invalid_argument,
+                what + ": '" + text + "' is not a finite number");
+  }
+  return v;
+}
+
+Result<std::uint32_t> parse_uint(const std::string& text, const std::string& what,
+                                 std::uint32_t lo, std::uint32_t hi) {
+  errno = 0;
+  char* end = nullptr;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || v < lo || v > hi) {
+    return fail(ErrorCode::invalid_argument, what + ": '" + text + "' is not an integer in " +
+                                                 std::to_string(lo) + ".." + std::to_string(hi));
+  }
+  return static_cast<std::uint32_t>(v);
+}
+
+} // namespace
+
+Result<glm::vec3> parse_vec3(const std::string& text, const std::string& what) {
+  std::vector<std::string> parts;
+  std::stringstream ss(text);
+  for (std::string part; std::getline(ss, part, ',');) {
+    parts.push_back(part);
+  }
+  if (parts.size() != 3) {
+    return fail(ErrorCode::invalid_argument,
+                what + ": '" + text + "' must be three comma-separated numbers x,y,z");
+  }
+  glm::vec3 v;
+  for (int i = 0; i < 3; ++i) {
+    auto f = parse_float(parts[static_cast<std::size_t>(i)], what);
+    if (!f) {
+      return f.error();
+    }
+    v[i] = *f;
+  }
+  return v;
+}
+
+std::string help_text() {
+  return R"(snell - reflection and refraction effects for Vulkan, rendered headlessly
+
+usage:
+  snell render [options]     render a scene to PNG
+  snell info                 list the Vulkan devices and the one chosen
+  snell --help               this text
+
+render options:
+  --scene NAME|FILE   built-in scene (pool, window, spheres) or a .gltf/.glb file [pool]
+  --size WxH          output size in pixels, each 1..16384 [1280x720]
+  --out FILE.png      output PNG (rows top first, world up is image up)
+  --eye X,Y,Z         camera position [the scene's default camera]
+  --target X,Y,Z      point looked at [the scene's default camera]
+  --fov DEG           vertical field of view in degrees, (0,180) [scene camera or 45]
+  --near N --far F    clip distances, 0 < N < F [scene camera or 0.1, 200]
+  --time SECONDS      scene time (animation), finite [0]
+  --frames N          render N frames (time advances 1/60 s each) and report start-up
+                      separately from the median frame time, 1..100000 [1]
+  --debug-targets     composite thumbnails of intermediate targets into the corners
+  --device NAME       lavapipe, gpu, or a device-name substring [SNELL_DEVICE or best]
+  --validation        enable the Khronos validation layer (also SNELL_VALIDATION=1)
+
+Exit codes: 0 success, 1 failure while rendering, 2 bad arguments.
+)";
+}
+
+Result<Command> parse(const std::vector<std::string>& args) {
+  Command cmd;
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    cmd.name = "help";
+    return cmd;
+  }
+  cmd.name = args[0];
+  if (cmd.name == "info") {
+    if (args.size() > 1) {
+      return fail(ErrorCode::invalid_argument, "info: unexpected argument '" + args[1] + "'");
+    }
+    return cmd;
+  }
+  if (cmd.name != "render") {
+    return fail(ErrorCode::invalid_argument,
+                "unknown command '" + cmd.name + "' (commands: render, info; see --help)");
+  }
+  RenderOptions& o = cmd.render;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      cmd.name = "help";
+      return cmd;
+    }
+    if (a == "--debug-targets") {
+      o.debug_targets = true;
+      continue;
+    }
+    if (a == "--validation") {
+      o.validation = true;
+      continue;
+    }
+    if (i + 1 >= args.size()) {
+      return fail(ErrorCode::invalid_argument, a + ": missing value (see --help)");
+    }
+    const std::string& v = args[++i];
+    Result<void> ok;
+    if (a == "--scene") {
+      o.scene = v;
+    } else if (a == "--out") {
+      o.out = v;
+    } else if (a == "--device") {
+      o.device = v;
+    } else if (a == "--size") {
+      const auto x = v.find('x');
+      if (x == std::string::npos) {
+        return fail(ErrorCode::invalid_argument, "--size: '" + v + "' must be WxH, e.g. 1280x720");
+      }
+      auto w = parse_uint(v.substr(0, x), "--size width", 1, 16384);
+      auto h = parse_uint(v.substr(x + 1), "--size height", 1, 16384);
+      if (!w || !h) {
+        return !w ? w.error() : h.error();
+      }
+      o.width = *w;
+      o.height = *h;
+    } else if (a == "--eye" || a == "--target") {
+      auto p = parse_vec3(v, a);
+      if (!p) {
+        return p.error();
+      }
+      (a == "--eye" ? o.eye : o.target) = *p;
+    } else if (a == "--fov") {
+      auto f = parse_float(v, a);
+      if (!f || !(*f > 0.0f && *f < 180.0f)) {
+        return f ? fail(ErrorCode::invalid_argument, "--fov: " + v + " is outside (0, 180) degrees")
+                 : f.error();
+      }
+      o.fov_degrees = *f;
+    } else if (a == "--near" || a == "--far") {
+      auto f = parse_float(v, a);
+      if (!f || !(*f > 0.0f)) {
+        return f ? fail(ErrorCode::invalid_argument, a + ": " + v + " must be > 0") : f.error();
+      }
+      (a == "--near" ? o.z_near : o.z_far) = *f;
+    } else if (a == "--time") {
+      auto f = parse_float(v, a);
+      if (!f) {
+        return f.error();
+      }
+      o.time = *f;
+    } else if (a == "--frames") {
+      auto n = parse_uint(v, a, 1, 100000);
+      if (!n) {
+        return n.error();
+      }
+      o.frames = *n;
+    } else {
+      return fail(ErrorCode::invalid_argument, "render: unknown option '" + a + "' (see --help)");
+    }
+  }
+  if (o.z_near && o.z_far && !(*o.z_near < *o.z_far)) {
+    return fail(ErrorCode::invalid_argument, "--near must be smaller than --far");
+  }
+  if (o.eye && o.target && *o.eye == *o.target) {
+    return fail(ErrorCode::invalid_argument, "--eye and --target must differ");
+  }
+  if (o.out.empty() && o.frames == 1) {
+    return fail(ErrorCode::invalid_argument, "render: --out FILE.png is required");
+  }
+  return cmd;
+}
+
+} // namespace snell::cli

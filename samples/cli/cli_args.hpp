@@ -1,0 +1,46 @@
+// Command-line parsing of the `snell` tool: every bad argument is one clear line (exit code 2).
+#pragma once
+
+#include <snell/result.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace snell::cli {
+
+/// Options of `snell render`.
+struct RenderOptions {
+  std::string scene = "pool";             ///< Built-in name or a .gltf/.glb path.
+  std::uint32_t width = 1280;             ///< --size WxH.
+  std::uint32_t height = 720;
+  std::string out;                        ///< --out file.png (required unless --frames only).
+  std::optional<glm::vec3> eye, target;   ///< --eye x,y,z --target x,y,z.
+  std::optional<float> fov_degrees;       ///< --fov DEG (vertical).
+  std::optional<float> z_near, z_far;     ///< --near N --far F.
+  float time = 0.0f;                      ///< --time SECONDS.
+  std::uint32_t frames = 1;               ///< --frames N (time advances by 1/60 s a frame).
+  bool debug_targets = false;             ///< --debug-targets.
+  std::string device;                     ///< --device lavapipe|gpu|NAME.
+  bool validation = false;                ///< --validation.
+};
+
+/// A parsed command line.
+struct Command {
+  std::string name; ///< "render", "info", "help".
+  RenderOptions render;
+};
+
+/// Parses argv (without the program name). Errors are one line, naming the argument.
+[[nodiscard]] Result<Command> parse(const std::vector<std::string>& args);
+
+/// The --help text.
+[[nodiscard]] std::string help_text();
+
+/// Parses "x,y,z" (finite numbers) for `what`.
+[[nodiscard]] Result<glm::vec3> parse_vec3(const std::string& text, const std::string& what);
+
+} // namespace snell::cli

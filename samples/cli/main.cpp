@@ -1,0 +1,28 @@
+// `snell`: renders Snell's scenes and effects headlessly (see --help).
+#include "cli_args.hpp"
+#include "commands.hpp"
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  auto cmd = snell::cli::parse(args);
+  if (!cmd) {
+    std::fprintf(stderr, "snell: %s\n", cmd.error().message.c_str());
+    return 2;
+  }
+  try {
+    if (cmd->name == "help") {
+      std::fputs(snell::cli::help_text().c_str(), stdout);
+      return 0;
+    }
+    if (cmd->name == "info") {
+      return snell::cli::run_info();
+    }
+    return snell::cli::run_render(cmd->render);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "snell: internal error: %s\n", e.what());
+    return 1;
+  }
+}

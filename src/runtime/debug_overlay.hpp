@@ -1,0 +1,39 @@
+// Internal: draws debug thumbnails of intermediate targets into the corners of the output
+// (seed 004's debug window, seed 001's reflection/refraction thumbnails).
+#pragma once
+
+#include <snell/frame.hpp>
+
+#include "context_impl.hpp"
+
+#include <span>
+
+namespace snell::detail {
+
+class DebugOverlay {
+public:
+  static Result<DebugOverlay> create(const Context::Impl& ctx, VkFormat color_format);
+  DebugOverlay() = default;
+  DebugOverlay(DebugOverlay&& o) noexcept;
+  DebugOverlay& operator=(DebugOverlay&& o) noexcept;
+  DebugOverlay(const DebugOverlay&) = delete;
+  DebugOverlay& operator=(const DebugOverlay&) = delete;
+  ~DebugOverlay();
+
+  /// Inside an overlay rendering: up to 4 thumbnails, a quarter of the width each, placed
+  /// clockwise from the top-left corner, aspect kept from the output.
+  void draw(VkCommandBuffer cmd, std::span<const DebugTarget> targets, std::uint32_t width,
+            std::uint32_t height);
+
+private:
+  void swap(DebugOverlay& o) noexcept;
+  const Context::Impl* ctx_ = nullptr;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet sets_[4] = {};
+};
+
+} // namespace snell::detail
