@@ -2,6 +2,9 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 
+// Sanitizer builds only: lets LeakSanitizer attribute the Vulkan driver's own leaks.
+#include "../../tests/sanitizers/pin_vulkan_libraries.hpp"
+
 #include <cstdio>
 #include <exception>
 

@@ -59,6 +59,8 @@ Result<DebugOverlay> DebugOverlay::create(const Context::Impl& ctx, VkFormat col
   sci.magFilter = sci.minFilter = VK_FILTER_LINEAR;
   sci.addressModeU = sci.addressModeV = sci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   SNELL_VK_TRY(vkCreateSampler(d, &sci, nullptr, &o.sampler_), "debug overlay sampler");
+  sci.magFilter = sci.minFilter = VK_FILTER_NEAREST;
+  SNELL_VK_TRY(vkCreateSampler(d, &sci, nullptr, &o.depth_sampler_), "debug overlay sampler");
   const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
   auto dpci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   dpci.maxSets = 4;
@@ -87,6 +89,7 @@ void DebugOverlay::swap(DebugOverlay& o) noexcept {
   std::swap(layout_, o.layout_);
   std::swap(pipeline_, o.pipeline_);
   std::swap(sampler_, o.sampler_);
+  std::swap(depth_sampler_, o.depth_sampler_);
   std::swap(pool_, o.pool_);
   std::swap(sets_, o.sets_);
 }
@@ -97,6 +100,7 @@ DebugOverlay::~DebugOverlay() {
   const VkDevice d = ctx_->device;
   vkDestroyDescriptorPool(d, pool_, nullptr);
   vkDestroySampler(d, sampler_, nullptr);
+  vkDestroySampler(d, depth_sampler_, nullptr);
   vkDestroyPipeline(d, pipeline_, nullptr);
   vkDestroyPipelineLayout(d, layout_, nullptr);
   vkDestroyDescriptorSetLayout(d, set_layout_, nullptr);
@@ -116,7 +120,7 @@ void DebugOverlay::draw(VkCommandBuffer cmd, std::span<const DebugTarget> target
   vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
   vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
   for (std::size_t i = 0; i < targets.size() && i < 4; ++i) {
-    const VkDescriptorImageInfo image{sampler_, targets[i].view,
+    const VkDescriptorImageInfo image{targets[i].depth ? depth_sampler_ : sampler_, targets[i].view,
                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     auto write = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     write.dstSet = sets_[i];

@@ -31,7 +31,8 @@ private:
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE;       ///< Linear, for colour.
+  VkSampler depth_sampler_ = VK_NULL_HANDLE; ///< Nearest: depth formats need not filter.
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet sets_[4] = {};
 };

@@ -62,7 +62,9 @@ std::string expand_file_path(const std::string& path, void* user_data) {
                "file reference '" + clip_for_message(*rel) + "' refused: it " + *why);
     return {};
   }
-  return path;
+  // RFC 3986 removes dot segments before a reference is resolved ("sub/../a.bin" is "a.bin",
+  // whether or not a folder "sub" exists); uri_path_violation has ensured none climbs out.
+  return ctx.base_prefix + fs::path(*rel).lexically_normal().generic_string();
 }
 
 bool file_exists(const std::string& path, void* user_data) {

@@ -54,9 +54,9 @@ public:
       return std::optional<Mesh>{};
     }
     const GltfLimits& limits = ctx_.limits;
-    if (Result<void> r = fits(model_.accessors[static_cast<std::size_t>(position_accessor)].count,
-                              totals_.vertices, limits.max_total_vertices,
-                              "POSITION", "max_total_vertices");
+    if (Result<void> r =
+            fits(model_.accessors[static_cast<std::size_t>(position_accessor)].count,
+                 totals_.vertices, limits.max_total_vertices, "POSITION", "max_total_vertices");
         !r) {
       return r.error();
     }
@@ -118,8 +118,8 @@ public:
 private:
   // Checks, before anything is allocated, that `count` more elements keep the total within
   // GltfLimits::<limit_name> = `limit`.
-  Result<void> fits(std::uint64_t count, std::uint64_t used, std::uint64_t limit,
-                    const char* what, const char* limit_name) const {
+  Result<void> fits(std::uint64_t count, std::uint64_t used, std::uint64_t limit, const char* what,
+                    const char* limit_name) const {
     if (count > room(limit, used)) {
       return ctx_.fail(ErrorCode::limit_exceeded,
                        what_ + " " + what + ": " + std::to_string(count) + " elements (" +
@@ -149,9 +149,9 @@ private:
       }
       return implicit;
     }
-    if (Result<void> r = fits(model_.accessors[static_cast<std::size_t>(prim_.indices)].count,
-                              totals_.indices, ctx_.limits.max_total_indices, "indices",
-                              "max_total_indices");
+    if (Result<void> r =
+            fits(model_.accessors[static_cast<std::size_t>(prim_.indices)].count, totals_.indices,
+                 ctx_.limits.max_total_indices, "indices", "max_total_indices");
         !r) {
       return r.error();
     }
@@ -209,10 +209,10 @@ private:
     }
     bool degenerate_normal = false;
     for (std::size_t i = 0; i < n; ++i) {
-      const glm::vec3 v((*normal)[3 * i], (*normal)[3 * i + 1], (*normal)[3 * i + 2]);
-      const float len = glm::length(v);
-      degenerate_normal = degenerate_normal || !(len > 1e-12f);
-      vertices[i].normal = len > 1e-12f ? v / len : glm::vec3(0.0f);
+      const std::optional<glm::vec3> v =
+          safe_normalize({(*normal)[3 * i], (*normal)[3 * i + 1], (*normal)[3 * i + 2]});
+      degenerate_normal = degenerate_normal || !v;
+      vertices[i].normal = v.value_or(glm::vec3(0.0f));
     }
     if (degenerate_normal) {
       // Zero-length normals (seen in exports of degenerate faces): only those vertices get the
@@ -230,13 +230,13 @@ private:
       return {};
     }
     for (std::size_t i = 0; i < n; ++i) {
-      const glm::vec3 t((*tangent)[4 * i], (*tangent)[4 * i + 1], (*tangent)[4 * i + 2]);
-      const float len = glm::length(t);
-      if (!(len > 1e-12f)) {
+      const std::optional<glm::vec3> t =
+          safe_normalize({(*tangent)[4 * i], (*tangent)[4 * i + 1], (*tangent)[4 * i + 2]});
+      if (!t) {
         generate_tangents(vertices, indices); // Unusable tangents: generate them all.
         return {};
       }
-      vertices[i].tangent = glm::vec4(t / len, (*tangent)[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
+      vertices[i].tangent = glm::vec4(*t, (*tangent)[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
     }
     return {};
   }

@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace snell::detail {
@@ -18,11 +19,6 @@ bool finite(glm::vec4 v) {
   return finite(glm::vec3(v)) && std::isfinite(v.w);
 }
 
-// Squared lengths below this are treated as zero: vectors built from float positions in the
-// usual ranges are many orders of magnitude longer, and dividing by such a length would amplify
-// rounding noise into an arbitrary direction.
-constexpr float tiny_length2 = 1e-30f;
-
 bool triangle_in_range(const std::vector<std::uint32_t>& indices, std::size_t first,
                        std::size_t vertex_count) {
   return indices[first] < vertex_count && indices[first + 1] < vertex_count &&
@@ -30,14 +26,21 @@ bool triangle_in_range(const std::vector<std::uint32_t>& indices, std::size_t fi
 }
 
 glm::vec3 normalized_or(glm::vec3 v, glm::vec3 fallback) {
-  const float len2 = glm::dot(v, v);
-  if (!(len2 > tiny_length2) || !std::isfinite(len2)) {
-    return fallback;
-  }
-  return v / std::sqrt(len2);
+  return safe_normalize(v).value_or(fallback);
 }
 
 } // namespace
+
+std::optional<glm::vec3> safe_normalize(glm::vec3 v) {
+  // Divide by the largest component first: squaring components of 1e20 (or 1e-25) would
+  // overflow (underflow) a float, although the direction is perfectly defined.
+  const float m = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+  if (!(m > 0.0f) || !std::isfinite(m)) {
+    return std::nullopt;
+  }
+  const glm::vec3 w = v / m;
+  return w / std::sqrt(glm::dot(w, w));
+}
 
 glm::vec3 any_perpendicular(glm::vec3 n) {
   // Cross with the coordinate axis least aligned with n, so the result is never near zero.
@@ -134,13 +137,16 @@ void generate_tangents(std::vector<Vertex>& vertices, const std::vector<std::uin
     Vertex& v = vertices[i];
     const glm::vec3 n = normalized_or(v.normal, glm::vec3(0, 1, 0));
     // Gram-Schmidt: remove the normal component so that the frame is orthonormal.
-    const glm::vec3 t = tan_sum[i] - n * glm::dot(n, tan_sum[i]);
-    const float len2 = glm::dot(t, t);
-    if (!(len2 > tiny_length2) || !std::isfinite(len2)) {
+    const std::optional<glm::vec3> sum_dir = safe_normalize(tan_sum[i]);
+    // Work on the unit direction (the sums may be huge or tiny), and fall back when it is (nearly)
+    // parallel to the normal: what remains after removing the normal part would be rounding noise.
+    const glm::vec3 t = sum_dir ? *sum_dir - n * glm::dot(n, *sum_dir) : glm::vec3(0.0f);
+    const std::optional<glm::vec3> t_dir = safe_normalize(t);
+    if (!t_dir || glm::dot(t, t) < 1e-8f) {
       v.tangent = glm::vec4(any_perpendicular(n), 1.0f);
       continue;
     }
-    const glm::vec3 tn = t / std::sqrt(len2);
+    const glm::vec3 tn = *t_dir;
     const float handedness = glm::dot(glm::cross(n, tn), up_sum[i]) < 0.0f ? -1.0f : 1.0f;
     v.tangent = glm::vec4(tn, handedness);
   }

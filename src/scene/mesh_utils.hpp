@@ -38,6 +38,10 @@ void generate_flat_or_smooth_normals(std::vector<Vertex>& vertices,
 /// gets an arbitrary unit tangent perpendicular to its normal and w = +1 (any_perpendicular).
 void generate_tangents(std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices);
 
+/// `v` scaled to unit length, or nullopt when it has no direction (zero, NaN or infinite
+/// components). Overflow-safe: components up to FLT_MAX normalise correctly.
+[[nodiscard]] std::optional<glm::vec3> safe_normalize(glm::vec3 v);
+
 /// A unit vector perpendicular to the unit vector `n` (stable for every direction).
 [[nodiscard]] glm::vec3 any_perpendicular(glm::vec3 n);
 
