@@ -13,6 +13,8 @@ namespace snell {
 /// base colour / normal / emissive textures, alpha mask, and a gradient sky drawn behind
 /// everything. Honours SceneView's clip plane (gl_ClipDistance), layer mask, front-face flip
 /// and multiview. Pipelines are created lazily per (colour format, depth format, view mask).
+/// Textures are sampled trilinearly, with 8x anisotropy on GPUs and none on CPU devices
+/// (lavapipe), where anisotropic filtering triples the frame time.
 ///
 /// Per-view data lives in a ring of `kMaxViewsInFlight` uniform blocks: at most that many
 /// draw_scene calls may be recorded between two waits on the GPU.

@@ -173,7 +173,7 @@ TEST_CASE("builtin scenes: deterministic") {
   }
 }
 
-TEST_CASE("pool scene: water between the basin floor and rim, objects under and above it") {
+TEST_CASE("pool scene: water between the basin floor and rim with objects under and above it") {
   const Scene s = scene_named("pool");
   const Anchor* water = s.find_anchor("water");
   REQUIRE(water != nullptr);
@@ -301,7 +301,7 @@ TEST_CASE("window scene: the spinning crate is wholly behind the window as seen 
   }
 }
 
-TEST_CASE("spheres scene: probe anchor at the centre sphere, objects all around it") {
+TEST_CASE("spheres scene: probe anchor at the centre sphere with objects all around it") {
   const Scene s = scene_named("spheres");
   const Anchor* probe = s.find_anchor("probe");
   REQUIRE(probe != nullptr);

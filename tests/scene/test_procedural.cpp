@@ -138,7 +138,7 @@ void check_tileable(const Image& image) {
 
 } // namespace
 
-TEST_CASE("procedural meshes: every generator is valid, counter-clockwise, with a glTF frame") {
+TEST_CASE("procedural meshes: every generator is valid and counter-clockwise with a glTF frame") {
   using namespace snell::detail;
   check_mesh_valid(make_box({1.0f, 2.0f, 3.0f}));
   check_mesh_valid(make_box({24.0f, 10.0f, 0.6f}, 1.0f));
@@ -152,7 +152,7 @@ TEST_CASE("procedural meshes: every generator is valid, counter-clockwise, with 
   check_mesh_valid(make_basin({8.0f, 6.0f}, 2.0f, 0.6f, 0.25f, BasinPart::outside));
 }
 
-TEST_CASE("procedural meshes: box extents, faces and uvs") {
+TEST_CASE("procedural meshes: box extents and faces and uvs") {
   const Mesh box = detail::make_box({1.0f, 2.0f, 3.0f});
   CHECK(box.vertices.size() == 24);
   CHECK(box.indices.size() == 36);
@@ -261,7 +261,7 @@ TEST_CASE("procedural meshes: the basin faces into the pool inside and out of it
   }
 }
 
-TEST_CASE("make_checker_image: cells alternate, colour a in the top-left") {
+TEST_CASE("make_checker_image: cells alternate with colour a in the top-left") {
   const glm::vec3 a(1.0f, 0.5f, 0.0f), b(0.0f, 0.25f, 1.0f);
   const Result<Image> r = make_checker_image(64, 8, a, b);
   REQUIRE(r);
@@ -283,7 +283,7 @@ TEST_CASE("make_checker_image: cells alternate, colour a in the top-left") {
   check_tileable(image); // an even number of cells tiles
 }
 
-TEST_CASE("make_checker_image: arguments out of range are rejected, not clamped") {
+TEST_CASE("make_checker_image: arguments out of range are rejected and not clamped") {
   const glm::vec3 a(1.0f), b(0.0f);
   for (auto [size, cells, what] :
        {std::tuple{0u, 1u, "size = 0"},
@@ -303,7 +303,7 @@ TEST_CASE("make_checker_image: arguments out of range are rejected, not clamped"
   CHECK(over.error().message.find("b = ") != std::string::npos);
 }
 
-TEST_CASE("make_brick_image: tileable, joints on the edges, deterministic, validated") {
+TEST_CASE("make_brick_image: tileable with joints on the edges and deterministic and validated") {
   const Result<Image> r = make_brick_image(256);
   REQUIRE(r);
   const Image& image = *r;
@@ -352,7 +352,7 @@ TEST_CASE("make_brick_image: tileable, joints on the edges, deterministic, valid
   CHECK(!make_brick_image(256, mortar));
 }
 
-TEST_CASE("make_noise_normal_map: unit normals facing out, tileable, deterministic") {
+TEST_CASE("make_noise_normal_map: unit normals facing out and tileable and deterministic") {
   const Result<Image> r = make_noise_normal_map(128, 0.8f, 7);
   REQUIRE(r);
   const Image& image = *r;
@@ -392,7 +392,7 @@ TEST_CASE("make_noise_normal_map: unit normals facing out, tileable, determinist
   CHECK(other->rgba8 != image.rgba8);
 }
 
-TEST_CASE("make_noise_normal_map: strength 0 is flat; bad arguments are rejected") {
+TEST_CASE("make_noise_normal_map: strength 0 is flat and bad arguments are rejected") {
   const Result<Image> flat = make_noise_normal_map(16, 0.0f, 1);
   REQUIRE(flat);
   for (std::size_t i = 0; i < flat->rgba8.size(); i += 4) {
