@@ -1,0 +1,159 @@
+// Golden images of the built-in scenes, plus independent pixel probes that do not depend on the
+// references: where the math says an object projects, the image shows that object's colour.
+#include <snell/builtin_scenes.hpp>
+#include <snell/frame.hpp>
+#include <snell/math.hpp>
+#include <snell/readback.hpp>
+#include <snell/scene_renderer.hpp>
+
+#include <doctest/doctest.h>
+#include <stb_image.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+using namespace snell;
+
+namespace {
+
+constexpr std::uint32_t kW = 320;
+constexpr std::uint32_t kH = 180;
+
+struct Rendered {
+  Image image;
+  SceneView view;
+  Scene scene;
+};
+
+Rendered render_builtin(const std::string& name) {
+  auto ctx = Context::create(ContextDesc{true, "lavapipe", "snell-golden"});
+  REQUIRE_MESSAGE(ctx.has_value(), ctx.error().message);
+  auto scene = make_builtin_scene(name);
+  REQUIRE(scene.has_value());
+  Rendered out;
+  {
+    auto renderer = SceneRenderer::create(*ctx, *scene);
+    REQUIRE(renderer.has_value());
+    auto frame = FrameRenderer::create(*ctx, FrameDesc{kW, kH, ColorFormat::rgba8_srgb, false});
+    REQUIRE(frame.has_value());
+    REQUIRE_FALSE(scene->cameras.empty());
+    auto stats = frame->render(*renderer, scene->cameras.front(), 0.0f);
+    REQUIRE_MESSAGE(stats.has_value(), stats.error().message);
+    auto image = frame->read_color();
+    REQUIRE(image.has_value());
+    out.image = std::move(*image);
+    out.view = make_main_view(scene->cameras.front(), kW, kH);
+  }
+  for (const std::string& m : ctx->validation_messages()) {
+    MESSAGE(m);
+  }
+  CHECK(ctx->validation_error_count() == 0);
+  out.scene = std::move(*scene);
+  return out;
+}
+
+glm::vec3 pixel(const Image& image, glm::vec2 p) {
+  const auto x = static_cast<std::uint32_t>(std::clamp(p.x, 0.0f, float(image.width - 1)));
+  const auto y = static_cast<std::uint32_t>(std::clamp(p.y, 0.0f, float(image.height - 1)));
+  const std::uint8_t* c = &image.rgba8[(std::size_t{y} * image.width + x) * 4];
+  return glm::vec3(c[0], c[1], c[2]) / 255.0f;
+}
+
+/// The pixel where the centre of object `name` projects.
+glm::vec2 object_pixel(const Rendered& r, const std::string& name) {
+  for (const Object& o : r.scene.objects) {
+    if (o.name == name) {
+      const glm::vec4 clip = r.view.proj * r.view.view * o.world_at(0.0f)[3];
+      return project_to_uv(clip, ClipConvention::vulkan) * glm::vec2(kW, kH);
+    }
+  }
+  FAIL("no object named " << name);
+  return {};
+}
+
+/// Compares with the committed reference. Tolerance: lavapipe is deterministic for one Mesa
+/// build, but llvmpipe's rasteriser and texture filtering may round differently with another
+/// SIMD width or LLVM version; a change of a few 8-bit steps along edges and in filtered
+/// textures is expected, a shading or geometry change moves many pixels by much more. So: at
+/// most 0.5% of pixels may differ by more than 16 steps in any channel, and the mean absolute
+/// difference must stay under 1 step. On failure the actual and difference images are written.
+void compare_with_golden(const Image& actual, const std::string& name) {
+  const std::filesystem::path ref_path = std::filesystem::path(SNELL_GOLDEN_DIR) / (name + ".png");
+  std::filesystem::create_directories(SNELL_GOLDEN_OUTPUT_DIR);
+  const std::filesystem::path out_dir(SNELL_GOLDEN_OUTPUT_DIR);
+  if (const char* update = std::getenv("SNELL_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+    REQUIRE(write_png(ref_path, actual));
+    MESSAGE("updated " << ref_path.string() << ": look at it before committing");
+    return;
+  }
+  int w = 0, h = 0, comp = 0;
+  unsigned char* ref = stbi_load(ref_path.string().c_str(), &w, &h, &comp, 4);
+  REQUIRE_MESSAGE(ref != nullptr, "missing reference " << ref_path.string());
+  REQUIRE(static_cast<std::uint32_t>(w) == actual.width);
+  REQUIRE(static_cast<std::uint32_t>(h) == actual.height);
+  Image diff = actual;
+  std::size_t big = 0;
+  double sum = 0.0;
+  const std::size_t pixels = std::size_t{actual.width} * actual.height;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int d = std::abs(int(actual.rgba8[i * 4 + c]) - int(ref[i * 4 + c]));
+      worst = std::max(worst, d);
+      sum += d;
+      diff.rgba8[i * 4 + c] = static_cast<std::uint8_t>(std::min(255, d * 8));
+    }
+    diff.rgba8[i * 4 + 3] = 255;
+    big += worst > 16 ? 1 : 0;
+  }
+  stbi_image_free(ref);
+  const double mean = sum / double(pixels * 3);
+  const double big_fraction = double(big) / double(pixels);
+  CAPTURE(mean);
+  CAPTURE(big_fraction);
+  const bool ok = big_fraction <= 0.005 && mean < 1.0;
+  if (!ok) {
+    (void)write_png(out_dir / (name + ".actual.png"), actual);
+    (void)write_png(out_dir / (name + ".diff.png"), diff);
+    MESSAGE("wrote " << (out_dir / (name + ".actual.png")).string() << " and the difference");
+  }
+  CHECK(ok);
+}
+
+bool is_sky_like(glm::vec3 c) { return c.b > c.r && c.b > 0.5f; }
+
+} // namespace
+
+TEST_CASE("golden: pool") {
+  const Rendered r = render_builtin("pool");
+  compare_with_golden(r.image, "pool");
+  // Independent probes: the top-left corner is sky, the brick wall is red-dominant, the
+  // orange ball is orange where it projects.
+  CHECK(is_sky_like(pixel(r.image, {2, 2})));
+  const Anchor* water = r.scene.find_anchor("water");
+  REQUIRE(water != nullptr);
+  const glm::vec3 ball = pixel(r.image, object_pixel(r, "ball_orange"));
+  CAPTURE(ball);
+  CHECK(ball.r > 0.6f);
+  CHECK(ball.g > 0.2f);
+  CHECK(ball.b < 0.3f);
+}
+
+TEST_CASE("golden: window") {
+  const Rendered r = render_builtin("window");
+  compare_with_golden(r.image, "window");
+  CHECK(is_sky_like(pixel(r.image, {2, 2})));
+  const glm::vec3 ball = pixel(r.image, object_pixel(r, "ball_blue"));
+  CAPTURE(ball);
+  CHECK(ball.b > ball.r + 0.2f);
+}
+
+TEST_CASE("golden: spheres") {
+  const Rendered r = render_builtin("spheres");
+  compare_with_golden(r.image, "spheres");
+  const glm::vec3 probe = pixel(r.image, object_pixel(r, "probe_sphere"));
+  CAPTURE(probe);
+  CHECK(probe.r > 0.5f); // silver: bright and grey
+  CHECK(std::fabs(probe.r - probe.b) < 0.15f);
+}
