@@ -14,12 +14,19 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         FILES_MATCHING PATTERN "*.hpp")
 
-# Targets. [snell::runtime] / [plugins]: append snell_runtime and plugin targets here.
-install(TARGETS snell_math
+# Targets: the math headers always; the CPU scene library and the Vulkan runtime when built.
+set(_snell_install_targets snell_math)
+if(TARGET snell_runtime)
+  list(APPEND _snell_install_targets snell_scene snell_runtime)
+endif()
+install(TARGETS ${_snell_install_targets}
         EXPORT snellTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+if(TARGET snell)
+  install(TARGETS snell RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+endif()
 
 install(EXPORT snellTargets
         NAMESPACE snell::
