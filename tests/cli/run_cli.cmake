@@ -57,6 +57,12 @@ foreach(scene pool window spheres)
     message(FATAL_ERROR "${png}: not a 160x90 PNG (header ${header})")
   endif()
 endforeach()
+# The sample glTF asset (hierarchy, negative scale, generated normals, camera, light) renders.
+expect_exit(0 render --scene "${ASSET_DIR}/courtyard.gltf" --size 160x90
+            --out "${WORK_DIR}/courtyard.png" --validation)
+if(NOT EXISTS "${WORK_DIR}/courtyard.png")
+  message(FATAL_ERROR "courtyard.gltf rendered no PNG")
+endif()
 # A missing glTF file is an error naming it (exit 1: a failure, not a usage error).
 expect_exit(1 render --scene "${WORK_DIR}/missing.gltf" --out "${WORK_DIR}/m.png")
 string(FIND "${last_err}" "missing.gltf" found)
