@@ -17,10 +17,10 @@ enum class MemoryUsage : std::uint8_t {
 
 /// Parameters of Buffer::create.
 struct BufferDesc {
-  VkDeviceSize size = 0;          ///< Bytes, > 0. No default size: 0 is rejected.
-  VkBufferUsageFlags usage = 0;   ///< Vulkan usage bits, != 0. TRANSFER_DST is added for gpu_only.
+  VkDeviceSize size = 0;        ///< Bytes, > 0. No default size: 0 is rejected.
+  VkBufferUsageFlags usage = 0; ///< Vulkan usage bits, != 0. TRANSFER_DST is added for gpu_only.
   MemoryUsage memory = MemoryUsage::gpu_only; ///< Default gpu_only.
-  const char* debug_name = "buffer"; ///< Used in error messages. Default "buffer".
+  const char* debug_name = "buffer";          ///< Used in error messages. Default "buffer".
 };
 
 class Buffer;

@@ -16,10 +16,10 @@ namespace snell {
 
 /// Description of one physical device, as `snell info` prints it.
 struct DeviceInfo {
-  std::string name;                                        ///< VkPhysicalDeviceProperties::deviceName.
+  std::string name; ///< VkPhysicalDeviceProperties::deviceName.
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER; ///< Discrete, integrated, CPU, ...
-  std::uint32_t api_version = 0;                           ///< Vulkan version the driver reports.
-  std::string driver;                                      ///< Driver name and info.
+  std::uint32_t api_version = 0;                             ///< Vulkan version the driver reports.
+  std::string driver;                                        ///< Driver name and info.
   float timestamp_period_ns = 0.0f; ///< Nanoseconds per timestamp tick (0: no timestamps).
   bool suitable = false;            ///< Meets Snell's requirements (see `missing`).
   std::string missing;              ///< Why it is not suitable (empty when suitable).
@@ -45,8 +45,8 @@ struct AdoptInfo {
   VkInstance instance = VK_NULL_HANDLE;              ///< Required.
   VkPhysicalDevice physical_device = VK_NULL_HANDLE; ///< Required.
   VkDevice device = VK_NULL_HANDLE;                  ///< Required.
-  VkQueue queue = VK_NULL_HANDLE;      ///< Required: supports graphics, compute and transfer.
-  std::uint32_t queue_family = 0;      ///< Family index of `queue`. Default 0.
+  VkQueue queue = VK_NULL_HANDLE; ///< Required: supports graphics, compute and transfer.
+  std::uint32_t queue_family = 0; ///< Family index of `queue`. Default 0.
 };
 
 /// Owns (or borrows) the instance, device and queue that every Snell object uses.
@@ -86,7 +86,8 @@ public:
   [[nodiscard]] std::vector<std::string> validation_messages() const;
 
   /// Records commands with `record` into a one-time command buffer, submits it and waits.
-  [[nodiscard]] Result<void> submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+  [[nodiscard]] Result<void>
+  submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
 
   /// Index of a memory type allowed by `type_bits` with all of `properties`, or an error.
   [[nodiscard]] Result<std::uint32_t> find_memory_type(std::uint32_t type_bits,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <snell/context.hpp>
+#include <snell/effect.hpp>
 #include <snell/gpu_timer.hpp>
 #include <snell/images.hpp>
 #include <snell/scene.hpp>
@@ -17,19 +18,12 @@
 
 namespace snell {
 
-/// An image shown as a thumbnail when debug targets are on.
-struct DebugTarget {
-  std::string name;                ///< Shown in logs ("water.reflection", "depth", ...).
-  VkImageView view = VK_NULL_HANDLE; ///< A 2D view in SHADER_READ_ONLY_OPTIMAL when drawn.
-  bool depth = false;              ///< Depth image: visualised with a contrast curve.
-};
-
 /// Parameters of FrameRenderer::create.
 struct FrameDesc {
-  std::uint32_t width = 1280;  ///< Output width in pixels, 1..16384. Default 1280.
-  std::uint32_t height = 720;  ///< Output height in pixels, 1..16384. Default 720.
+  std::uint32_t width = 1280;                  ///< Output width in pixels, 1..16384. Default 1280.
+  std::uint32_t height = 720;                  ///< Output height in pixels, 1..16384. Default 720.
   ColorFormat color = ColorFormat::rgba8_srgb; ///< Output format. Default rgba8_srgb.
-  bool debug_targets = false;  ///< Composite thumbnails into the corners. Default false.
+  bool debug_targets = false; ///< Composite thumbnails into the corners. Default false.
 };
 
 /// What one rendered frame cost.
@@ -45,8 +39,8 @@ struct FrameHooks {
   std::function<void(VkCommandBuffer, GpuTimer&, const SceneView& main_view)> offscreen;
   /// Draws inside the main rendering, after the scene.
   std::function<void(VkCommandBuffer, const SceneView& main_view)> in_main;
-  /// Extra debug thumbnails (after the main pass).
-  std::vector<DebugTarget> debug_targets;
+  /// Extra debug thumbnails, asked for after the main pass (effects create targets lazily).
+  std::function<std::vector<DebugTarget>()> debug_targets;
 };
 
 /// The main view of a camera for a `width` x `height` output: y-flipped Vulkan projection with

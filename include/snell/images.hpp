@@ -34,8 +34,8 @@ struct RenderTargetDesc {
   std::uint32_t width = 0;  ///< Pixels, 1..kMaxImageDimension. No default: 0 is rejected.
   std::uint32_t height = 0; ///< Pixels, 1..kMaxImageDimension. No default: 0 is rejected.
   ColorFormat color = ColorFormat::rgba8_unorm; ///< Default rgba8_unorm.
-  bool depth = true;        ///< Also create a D32_SFLOAT depth image (sampleable). Default true.
-  bool mips = false;        ///< Full mip chain on the colour image (see generate_mips). Default false.
+  bool depth = true; ///< Also create a D32_SFLOAT depth image (sampleable). Default true.
+  bool mips = false; ///< Full mip chain on the colour image (see generate_mips). Default false.
   const char* debug_name = "render target"; ///< Used in error messages.
 };
 
@@ -47,7 +47,8 @@ struct RenderTargetDesc {
 class RenderTarget {
 public:
   /// Errors: invalid_argument naming the field (zero or oversize extent), out_of_memory.
-  [[nodiscard]] static Result<RenderTarget> create(const Context& ctx, const RenderTargetDesc& desc);
+  [[nodiscard]] static Result<RenderTarget> create(const Context& ctx,
+                                                   const RenderTargetDesc& desc);
 
   RenderTarget() = default;
   RenderTarget(RenderTarget&&) noexcept;
@@ -98,9 +99,10 @@ private:
 
 /// Parameters of CubeTarget::create.
 struct CubeTargetDesc {
-  std::uint32_t size = 256; ///< Face width = height in pixels, 1..kMaxImageDimension. Default 256 (seed 002).
+  std::uint32_t size =
+      256; ///< Face width = height in pixels, 1..kMaxImageDimension. Default 256 (seed 002).
   ColorFormat color = ColorFormat::rgba8_unorm; ///< Default rgba8_unorm.
-  bool mips = true;         ///< Full mip chain (for rough/blurred lookups). Default true.
+  bool mips = true; ///< Full mip chain (for rough/blurred lookups). Default true.
   const char* debug_name = "cube target"; ///< Used in error messages.
 };
 
@@ -192,9 +194,9 @@ enum class AddressMode : std::uint8_t { repeat, mirrored_repeat, clamp_to_edge }
 
 /// Parameters of Sampler::create.
 struct SamplerDesc {
-  bool linear = true;                             ///< Linear (else nearest) filtering. Default true.
-  bool mipmaps = true;                            ///< Trilinear between levels. Default true.
-  AddressMode address = AddressMode::repeat;      ///< Default repeat.
+  bool linear = true;                        ///< Linear (else nearest) filtering. Default true.
+  bool mipmaps = true;                       ///< Trilinear between levels. Default true.
+  AddressMode address = AddressMode::repeat; ///< Default repeat.
   float max_anisotropy = 1.0f; ///< 1 = off; clamped to the device limit if anisotropy exists.
 };
 

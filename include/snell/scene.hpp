@@ -120,10 +120,10 @@ struct Sky {
 /// quad, the centre sphere of a cube-map probe). Built-in scenes define them; effects look them
 /// up by name so that a scene and an effect need not know each other.
 struct Anchor {
-  std::string name;          ///< E.g. "water", "window", "probe".
-  glm::vec3 position{0.0f};  ///< World-space centre.
-  glm::vec3 size{0.0f};      ///< World-space extent (full width, height, depth).
-  int object = -1;           ///< The object it belongs to (index into Scene::objects), or -1.
+  std::string name;         ///< E.g. "water", "window", "probe".
+  glm::vec3 position{0.0f}; ///< World-space centre.
+  glm::vec3 size{0.0f};     ///< World-space extent (full width, height, depth).
+  int object = -1;          ///< The object it belongs to (index into Scene::objects), or -1.
 };
 
 /// A complete scene.

@@ -21,14 +21,14 @@ struct SceneView {
   /// View to Vulkan clip space, depth [0,1]: y-flipped for 2D views (see docs/conventions.md),
   /// not flipped for cube faces; may be oblique.
   glm::mat4 proj{1.0f};
-  glm::vec3 eye{0.0f};                  ///< World-space eye (mirrored eye for mirrored views).
-  std::optional<Plane> clip_plane;      ///< World plane; only its positive side is drawn.
+  glm::vec3 eye{0.0f};                    ///< World-space eye (mirrored eye for mirrored views).
+  std::optional<Plane> clip_plane;        ///< World plane; only its positive side is drawn.
   std::uint32_t layer_mask = layer::main; ///< Objects drawn: those with (layers & mask) != 0.
   /// Swap the pipeline's front face. True when the view flips winding an odd number of times
   /// (mirrored view XOR unflipped-y projection): use `needs_front_face_flip(view, proj)`.
   bool flip_front_face = false;
-  VkExtent2D extent{0, 0};              ///< Size of the target being rendered.
-  VkFormat color_format = VK_FORMAT_UNDEFINED; ///< Format of the active colour attachment.
+  VkExtent2D extent{0, 0};                      ///< Size of the target being rendered.
+  VkFormat color_format = VK_FORMAT_UNDEFINED;  ///< Format of the active colour attachment.
   VkFormat depth_format = VK_FORMAT_D32_SFLOAT; ///< Depth attachment format (UNDEFINED: none).
   /// Multiview: 0 for a single view; 0b111111 to draw the six cube faces in one pass, with
   /// `multiview_view_proj[i]` per view (then `view` / `proj` are ignored for positions).

@@ -1,5 +1,6 @@
 #include "cli_args.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -13,14 +14,13 @@ Result<float> parse_float(const std::string& text, const std::string& what) {
   char* end = nullptr;
   const float v = std::strtof(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v)) {
-    return fail(ErrorCode::invalid_argument,
-                what + ": '" + text + "' is not a finite number");
+    return fail(ErrorCode::invalid_argument, what + ": '" + text + "' is not a finite number");
   }
   return v;
 }
 
-Result<std::uint32_t> parse_uint(const std::string& text, const std::string& what,
-                                 std::uint32_t lo, std::uint32_t hi) {
+Result<std::uint32_t> parse_uint(const std::string& text, const std::string& what, std::uint32_t lo,
+                                 std::uint32_t hi) {
   errno = 0;
   char* end = nullptr;
   const long long v = std::strtoll(text.c_str(), &end, 10);
@@ -58,7 +58,9 @@ std::string help_text() {
   return R"(snell - reflection and refraction effects for Vulkan, rendered headlessly
 
 usage:
-  snell render [options]     render a scene to PNG
+  snell render [options]     render a scene (with effects) to PNG
+  snell bench [options]      time plain frames against frames with the effects (GPU timestamps)
+  snell list                 list the effects and their parameters (name, type, default, range)
   snell info                 list the Vulkan devices and the one chosen
   snell --help               this text
 
@@ -76,6 +78,13 @@ render options:
   --debug-targets     composite thumbnails of intermediate targets into the corners
   --device NAME       lavapipe, gpu, or a device-name substring [SNELL_DEVICE or best]
   --validation        enable the Khronos validation layer (also SNELL_VALIDATION=1)
+  --effect NAME       add an effect (repeatable; see `snell list`), e.g. --effect water
+  --set E.KEY=VALUE   set a parameter of effect E (repeatable); vectors as x,y or x,y,z,
+                      e.g. --set water.wave_height=0 --set water.center=0,0
+
+bench options (as render, plus):
+  --frames N          frames of each kind (plain, with effects), >= 3 [60]
+  --json FILE         write the results as JSON: plain_ms, effect_ms, ratio, passes, device
 
 Exit codes: 0 success, 1 failure while rendering, 2 bad arguments.
 )";
@@ -88,15 +97,20 @@ Result<Command> parse(const std::vector<std::string>& args) {
     return cmd;
   }
   cmd.name = args[0];
-  if (cmd.name == "info") {
+  if (cmd.name == "info" || cmd.name == "list") {
     if (args.size() > 1) {
-      return fail(ErrorCode::invalid_argument, "info: unexpected argument '" + args[1] + "'");
+      return fail(ErrorCode::invalid_argument,
+                  cmd.name + ": unexpected argument '" + args[1] + "'");
     }
     return cmd;
   }
-  if (cmd.name != "render") {
+  if (cmd.name != "render" && cmd.name != "bench") {
     return fail(ErrorCode::invalid_argument,
-                "unknown command '" + cmd.name + "' (commands: render, info; see --help)");
+                "unknown command '" + cmd.name +
+                    "' (commands: render, bench, list, info; see --help)");
+  }
+  if (cmd.name == "bench") {
+    cmd.render.frames = 60;
   }
   RenderOptions& o = cmd.render;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -124,6 +138,18 @@ Result<Command> parse(const std::vector<std::string>& args) {
       o.out = v;
     } else if (a == "--device") {
       o.device = v;
+    } else if (a == "--effect") {
+      o.effects.push_back(v);
+    } else if (a == "--json" && cmd.name == "bench") {
+      o.json = v;
+    } else if (a == "--set") {
+      const auto dot = v.find('.');
+      const auto eq = v.find('=');
+      if (dot == std::string::npos || eq == std::string::npos || dot == 0 || eq < dot + 2) {
+        return fail(ErrorCode::invalid_argument,
+                    "--set: '" + v + "' must be EFFECT.KEY=VALUE, e.g. water.wave_height=0.5");
+      }
+      o.sets.push_back({v.substr(0, dot), v.substr(dot + 1, eq - dot - 1), v.substr(eq + 1)});
     } else if (a == "--size") {
       const auto x = v.find('x');
       if (x == std::string::npos) {
@@ -177,8 +203,18 @@ Result<Command> parse(const std::vector<std::string>& args) {
   if (o.eye && o.target && *o.eye == *o.target) {
     return fail(ErrorCode::invalid_argument, "--eye and --target must differ");
   }
-  if (o.out.empty() && o.frames == 1) {
+  if (cmd.name == "render" && o.out.empty() && o.frames == 1) {
     return fail(ErrorCode::invalid_argument, "render: --out FILE.png is required");
+  }
+  if (cmd.name == "bench" && o.frames < 3) {
+    return fail(ErrorCode::invalid_argument, "bench: --frames must be at least 3");
+  }
+  for (const auto& set : o.sets) {
+    if (std::find(o.effects.begin(), o.effects.end(), set[0]) == o.effects.end()) {
+      return fail(ErrorCode::invalid_argument, "--set " + set[0] + "." + set[1] + ": effect '" +
+                                                   set[0] + "' is not enabled (add --effect " +
+                                                   set[0] + ")");
+    }
   }
   return cmd;
 }

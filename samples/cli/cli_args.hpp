@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -14,23 +15,27 @@ namespace snell::cli {
 
 /// Options of `snell render`.
 struct RenderOptions {
-  std::string scene = "pool";             ///< Built-in name or a .gltf/.glb path.
-  std::uint32_t width = 1280;             ///< --size WxH.
+  std::string scene = "pool"; ///< Built-in name or a .gltf/.glb path.
+  std::uint32_t width = 1280; ///< --size WxH.
   std::uint32_t height = 720;
-  std::string out;                        ///< --out file.png (required unless --frames only).
-  std::optional<glm::vec3> eye, target;   ///< --eye x,y,z --target x,y,z.
-  std::optional<float> fov_degrees;       ///< --fov DEG (vertical).
-  std::optional<float> z_near, z_far;     ///< --near N --far F.
-  float time = 0.0f;                      ///< --time SECONDS.
-  std::uint32_t frames = 1;               ///< --frames N (time advances by 1/60 s a frame).
-  bool debug_targets = false;             ///< --debug-targets.
-  std::string device;                     ///< --device lavapipe|gpu|NAME.
-  bool validation = false;                ///< --validation.
+  std::string out;                      ///< --out file.png (required unless --frames only).
+  std::optional<glm::vec3> eye, target; ///< --eye x,y,z --target x,y,z.
+  std::optional<float> fov_degrees;     ///< --fov DEG (vertical).
+  std::optional<float> z_near, z_far;   ///< --near N --far F.
+  float time = 0.0f;                    ///< --time SECONDS.
+  std::uint32_t frames = 1;             ///< --frames N (time advances by 1/60 s a frame).
+  bool debug_targets = false;           ///< --debug-targets.
+  std::string device;                   ///< --device lavapipe|gpu|NAME.
+  bool validation = false;              ///< --validation.
+  std::vector<std::string> effects;     ///< --effect NAME (repeatable), in order.
+  /// --set EFFECT.KEY=VALUE (repeatable): (effect, key, value text), checked against the schema.
+  std::vector<std::array<std::string, 3>> sets;
+  std::string json; ///< bench: --json FILE.
 };
 
 /// A parsed command line.
 struct Command {
-  std::string name; ///< "render", "info", "help".
+  std::string name; ///< "render", "bench", "list", "info", "help".
   RenderOptions render;
 };
 

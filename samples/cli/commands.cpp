@@ -1,18 +1,16 @@
 #include "commands.hpp"
 
-#include <snell/builtin_scenes.hpp>
-#include <snell/frame.hpp>
-#include <snell/readback.hpp>
-#include <snell/scene_renderer.hpp>
+#include "session.hpp"
 
-#include <glm/trigonometric.hpp>
+#include <snell/readback.hpp>
 
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
+#include <fstream>
+#include <map>
 
 namespace snell::cli {
 namespace {
@@ -51,47 +49,6 @@ const char* type_name(VkPhysicalDeviceType t) {
   }
 }
 
-Result<Scene> load_scene(const std::string& name) {
-  const std::filesystem::path path(name);
-  const std::string ext = path.extension().string();
-  if (ext == ".gltf" || ext == ".glb") {
-    return load_gltf(path);
-  }
-  return make_builtin_scene(name);
-}
-
-/// The camera: the scene's first camera, else one framing the scene's bounds; then overrides.
-CameraDesc choose_camera(const Scene& scene, const RenderOptions& o) {
-  CameraDesc cam;
-  if (!scene.cameras.empty()) {
-    cam = scene.cameras.front();
-  } else {
-    const auto [lo, hi] = scene.bounds();
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 0.1f);
-    cam.target = centre;
-    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.45f, 1.0f)) * radius * 2.4f;
-    cam.z_near = radius * 0.01f;
-    cam.z_far = radius * 20.0f;
-  }
-  if (o.eye) {
-    cam.eye = *o.eye;
-  }
-  if (o.target) {
-    cam.target = *o.target;
-  }
-  if (o.fov_degrees) {
-    cam.yfov = glm::radians(*o.fov_degrees);
-  }
-  if (o.z_near) {
-    cam.z_near = *o.z_near;
-  }
-  if (o.z_far) {
-    cam.z_far = *o.z_far;
-  }
-  return cam;
-}
-
 int report_validation(const Context& ctx) {
   if (ctx.validation_enabled() && ctx.validation_error_count() > 0) {
     for (const std::string& m : ctx.validation_messages()) {
@@ -103,13 +60,30 @@ int report_validation(const Context& ctx) {
   return 0;
 }
 
+int failed(const Error& e, int code) {
+  std::fprintf(stderr, "snell: %s\n", e.message.c_str());
+  return code;
+}
+
+std::string json_escape(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+    }
+    if (static_cast<unsigned char>(c) >= 0x20) {
+      out += c;
+    }
+  }
+  return out;
+}
+
 } // namespace
 
 int run_info() {
   auto devices = Context::enumerate_devices();
   if (!devices) {
-    std::fprintf(stderr, "snell: %s\n", devices.error().message.c_str());
-    return 1;
+    return failed(devices.error(), 1);
   }
   std::printf("Vulkan devices:\n");
   for (const DeviceInfo& d : *devices) {
@@ -119,56 +93,63 @@ int run_info() {
   }
   auto ctx = Context::create();
   if (!ctx) {
-    std::fprintf(stderr, "snell: %s\n", ctx.error().message.c_str());
-    return 1;
+    return failed(ctx.error(), 1);
   }
   std::printf("chosen: %s\n", ctx->device_info().name.c_str());
   return 0;
 }
 
+int run_list() {
+  EffectRegistry registry;
+  if (auto r = register_builtin_effects(registry); !r) {
+    return failed(r.error(), 1);
+  }
+  for (const std::string& name : registry.names()) {
+    const ParamSchema* schema = registry.schema(name);
+    std::printf("%s: %s\n", name.c_str(), schema->doc.c_str());
+    for (const ParamSpec& p : schema->params) {
+      std::string range;
+      if (p.type == ParamType::enumeration) {
+        for (const std::string& c : p.choices) {
+          range += (range.empty() ? "" : "|");
+          range += c;
+        }
+      } else if (p.type != ParamType::boolean && p.type != ParamType::texture) {
+        range = '[';
+        range += to_string(ParamValue{p.min});
+        range += ", ";
+        range += to_string(ParamValue{p.max});
+        range += ']';
+      }
+      std::printf("  %-20s %-6s default %-18s %-26s %-4s %s\n", p.name.c_str(),
+                  std::string(to_string(p.type)).c_str(), to_string(p.default_value).c_str(),
+                  range.c_str(), p.unit.c_str(), p.doc.c_str());
+    }
+  }
+  return 0;
+}
+
 int run_render(const RenderOptions& o) {
   const auto start = Clock::now();
-  auto scene = load_scene(o.scene);
-  if (!scene) {
-    std::fprintf(stderr, "snell: %s\n", scene.error().message.c_str());
-    return scene.error().code == ErrorCode::unknown_name ? 2 : 1;
+  int code = 1;
+  auto session = open_session(o, code);
+  if (!session) {
+    return failed(session.error(), code);
   }
-  ContextDesc cd;
-  cd.validation = o.validation;
-  cd.device = o.device;
-  auto ctx = Context::create(cd);
-  if (!ctx) {
-    std::fprintf(stderr, "snell: %s\n", ctx.error().message.c_str());
-    return 1;
-  }
-  auto renderer = SceneRenderer::create(*ctx, *scene);
-  if (!renderer) {
-    std::fprintf(stderr, "snell: %s\n", renderer.error().message.c_str());
-    return 1;
-  }
-  auto frame = FrameRenderer::create(
-      *ctx, FrameDesc{o.width, o.height, ColorFormat::rgba8_srgb, o.debug_targets});
-  if (!frame) {
-    std::fprintf(stderr, "snell: %s\n", frame.error().message.c_str());
-    return 1;
-  }
-  const CameraDesc camera = choose_camera(*scene, o);
+  Session& s = **session;
   std::vector<double> cpu_ms, gpu_ms;
   double startup_ms = 0.0;
   for (std::uint32_t i = 0; i < o.frames; ++i) {
     const float t = o.time + static_cast<float>(i) / 60.0f;
-    auto stats = frame->render(*renderer, camera, t);
+    auto stats = s.render(t, true);
     if (!stats) {
-      std::fprintf(stderr, "snell: frame %u: %s\n", i, stats.error().message.c_str());
-      return 1;
+      return failed(stats.error(), 1);
     }
-    if (!renderer->last_error().empty()) {
-      std::fprintf(stderr, "snell: %s\n", renderer->last_error().c_str());
-      return 1;
+    if (!s.renderer->last_error().empty()) {
+      return failed(Error{ErrorCode::vulkan_error, s.renderer->last_error()}, 1);
     }
     if (i == 0) {
-      // Start-up: context, scene upload, pipelines (created on the first draw).
-      startup_ms = ms_since(start);
+      startup_ms = ms_since(start); // context, upload, pipelines (created on the first draw)
     }
     if (i > 0 || o.frames == 1) {
       cpu_ms.push_back(stats->cpu_ms);
@@ -176,18 +157,16 @@ int run_render(const RenderOptions& o) {
     }
   }
   if (!o.out.empty()) {
-    auto image = frame->read_color();
+    auto image = s.frame->read_color();
     if (!image) {
-      std::fprintf(stderr, "snell: %s\n", image.error().message.c_str());
-      return 1;
+      return failed(image.error(), 1);
     }
     if (auto r = write_png(o.out, *image); !r) {
-      std::fprintf(stderr, "snell: %s\n", r.error().message.c_str());
-      return 1;
+      return failed(r.error(), 1);
     }
   }
   std::printf("scene %s, %ux%u on %s\n", o.scene.c_str(), o.width, o.height,
-              ctx->device_info().name.c_str());
+              s.ctx->device_info().name.c_str());
   std::printf("start-up (context, upload, pipelines, first frame): %.1f ms\n", startup_ms);
   std::printf("frames timed: %zu, median frame: %.2f ms CPU wall, %.2f ms GPU\n", cpu_ms.size(),
               median(cpu_ms), median(gpu_ms));
@@ -195,7 +174,77 @@ int run_render(const RenderOptions& o) {
   if (!o.out.empty()) {
     std::printf("wrote %s\n", o.out.c_str());
   }
-  return report_validation(*ctx);
+  return report_validation(*s.ctx);
+}
+
+int run_bench(const RenderOptions& o) {
+  int code = 1;
+  auto session = open_session(o, code);
+  if (!session) {
+    return failed(session.error(), code);
+  }
+  Session& s = **session;
+  // Warm-up: pipelines and targets are created on first use and must not be timed.
+  for (const bool with : {false, true, false, true}) {
+    if (auto r = s.render(o.time, with); !r) {
+      return failed(r.error(), 1);
+    }
+  }
+  // Interleaved plain/effect frames, so drift (thermal, other load) hits both alike.
+  std::vector<double> plain_gpu, effect_gpu, plain_cpu, effect_cpu;
+  std::map<std::string, std::vector<double>> passes;
+  for (std::uint32_t i = 0; i < o.frames; ++i) {
+    const float t = o.time + static_cast<float>(i) / 60.0f;
+    auto plain = s.render(t, false);
+    auto effect = s.render(t, true);
+    if (!plain || !effect) {
+      return failed(!plain ? plain.error() : effect.error(), 1);
+    }
+    plain_gpu.push_back(plain->gpu_ms);
+    plain_cpu.push_back(plain->cpu_ms);
+    effect_gpu.push_back(effect->gpu_ms);
+    effect_cpu.push_back(effect->cpu_ms);
+    for (const PassTime& p : effect->passes) {
+      passes[p.name].push_back(p.ms);
+    }
+  }
+  const double plain_ms = median(plain_gpu);
+  const double effect_ms = median(effect_gpu);
+  const double ratio = plain_ms > 0.0 ? effect_ms / plain_ms : 0.0;
+  std::string effects;
+  for (const std::string& e : o.effects) {
+    effects += (effects.empty() ? "" : ",");
+    effects += e;
+  }
+  std::printf("bench %s + [%s], %ux%u, %u frames each, on %s\n", o.scene.c_str(), effects.c_str(),
+              o.width, o.height, o.frames, s.ctx->device_info().name.c_str());
+  std::printf("plain  %.3f ms GPU (%.3f ms CPU wall)\n", plain_ms, median(plain_cpu));
+  std::printf("effect %.3f ms GPU (%.3f ms CPU wall)\n", effect_ms, median(effect_cpu));
+  std::printf("ratio  %.3f\n", ratio);
+  for (const auto& [name, times] : passes) {
+    std::printf("  pass %-24s %.3f ms\n", name.c_str(), median(times));
+  }
+  if (!o.json.empty()) {
+    std::ofstream json(o.json);
+    if (!json) {
+      return failed(Error{ErrorCode::io_error, o.json + ": cannot write the JSON file"}, 1);
+    }
+    json << "{\n  \"scene\": \"" << json_escape(o.scene) << "\",\n  \"effects\": \""
+         << json_escape(effects) << "\",\n  \"width\": " << o.width
+         << ",\n  \"height\": " << o.height << ",\n  \"frames\": " << o.frames
+         << ",\n  \"device\": \"" << json_escape(s.ctx->device_info().name)
+         << "\",\n  \"plain_ms\": " << plain_ms << ",\n  \"effect_ms\": " << effect_ms
+         << ",\n  \"ratio\": " << ratio << ",\n  \"plain_cpu_ms\": " << median(plain_cpu)
+         << ",\n  \"effect_cpu_ms\": " << median(effect_cpu) << ",\n  \"passes\": {";
+    bool first = true;
+    for (const auto& [name, times] : passes) {
+      json << (first ? "\n" : ",\n") << "    \"" << json_escape(name) << "\": " << median(times);
+      first = false;
+    }
+    json << "\n  }\n}\n";
+    std::printf("wrote %s\n", o.json.c_str());
+  }
+  return report_validation(*s.ctx);
 }
 
 } // namespace snell::cli

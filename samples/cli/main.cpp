@@ -23,6 +23,12 @@ int main(int argc, char** argv) {
     if (cmd->name == "info") {
       return snell::cli::run_info();
     }
+    if (cmd->name == "list") {
+      return snell::cli::run_list();
+    }
+    if (cmd->name == "bench") {
+      return snell::cli::run_bench(cmd->render);
+    }
     return snell::cli::run_render(cmd->render);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "snell: internal error: %s\n", e.what());

@@ -62,11 +62,11 @@ void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std:
     blit.filter = VK_FILTER_LINEAR;
     vkCmdBlitImage2(cmd, &blit);
     // The level just written becomes the source of the next one.
-    barrier(cmd, ImageBarrier{image, VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers,
-                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                              VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                              VK_ACCESS_2_TRANSFER_READ_BIT});
+    barrier(cmd,
+            ImageBarrier{image, VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
     w = nw;
     h = nh;
   }

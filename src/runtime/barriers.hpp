@@ -22,7 +22,9 @@ struct ImageBarrier {
 
 /// Records the barriers with one vkCmdPipelineBarrier2.
 void barrier(VkCommandBuffer cmd, const ImageBarrier* barriers, std::uint32_t count);
-inline void barrier(VkCommandBuffer cmd, const ImageBarrier& b) { barrier(cmd, &b, 1); }
+inline void barrier(VkCommandBuffer cmd, const ImageBarrier& b) {
+  barrier(cmd, &b, 1);
+}
 
 /// Stages/accesses of every later reader of a finished target (shaders, copies, blits).
 inline constexpr VkPipelineStageFlags2 kReadStages =

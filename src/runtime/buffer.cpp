@@ -29,8 +29,8 @@ Result<Buffer> create_buffer(const Context::Impl& ctx, const BufferDesc& desc) {
   b.size_ = desc.size;
   VkBufferCreateInfo ci = vk_init<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
   ci.size = desc.size;
-  ci.usage = desc.usage | (desc.memory == MemoryUsage::gpu_only ? VK_BUFFER_USAGE_TRANSFER_DST_BIT
-                                                                 : 0);
+  ci.usage =
+      desc.usage | (desc.memory == MemoryUsage::gpu_only ? VK_BUFFER_USAGE_TRANSFER_DST_BIT : 0);
   ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   SNELL_VK_TRY(vkCreateBuffer(ctx.device, &ci, nullptr, &b.buffer_), name);
   VkMemoryRequirements req{};
@@ -39,10 +39,9 @@ Result<Buffer> create_buffer(const Context::Impl& ctx, const BufferDesc& desc) {
   if (desc.memory != MemoryUsage::gpu_only) {
     props = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   }
-  auto type = ctx.find_memory_type(req.memoryTypeBits,
-                                   desc.memory == MemoryUsage::readback
-                                       ? props | VK_MEMORY_PROPERTY_HOST_CACHED_BIT
-                                       : props);
+  auto type = ctx.find_memory_type(
+      req.memoryTypeBits,
+      desc.memory == MemoryUsage::readback ? props | VK_MEMORY_PROPERTY_HOST_CACHED_BIT : props);
   if (!type) {
     type = ctx.find_memory_type(req.memoryTypeBits, props);
   }
@@ -62,7 +61,8 @@ Result<Buffer> create_buffer(const Context::Impl& ctx, const BufferDesc& desc) {
 } // namespace detail
 
 Buffer::Buffer(Buffer&& other) noexcept
-    : ctx_(std::exchange(other.ctx_, nullptr)), buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
+    : ctx_(std::exchange(other.ctx_, nullptr)),
+      buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)), size_(std::exchange(other.size_, 0)),
       mapped_(std::exchange(other.mapped_, nullptr)) {}
 
@@ -78,7 +78,9 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
   return *this;
 }
 
-Buffer::~Buffer() { reset(); }
+Buffer::~Buffer() {
+  reset();
+}
 
 void Buffer::reset() {
   if (ctx_ == nullptr) {
@@ -102,10 +104,10 @@ Result<void> Buffer::upload(const void* data, VkDeviceSize bytes, VkDeviceSize o
     return fail(ErrorCode::invalid_argument, "Buffer::upload on an empty buffer");
   }
   if (offset > size_ || bytes > size_ - offset) {
-    return fail(ErrorCode::invalid_argument,
-                "Buffer::upload: range [" + std::to_string(offset) + ", " +
-                    std::to_string(offset + bytes) + ") exceeds the buffer size " +
-                    std::to_string(size_));
+    return fail(ErrorCode::invalid_argument, "Buffer::upload: range [" + std::to_string(offset) +
+                                                 ", " + std::to_string(offset + bytes) +
+                                                 ") exceeds the buffer size " +
+                                                 std::to_string(size_));
   }
   if (bytes == 0) {
     return {};

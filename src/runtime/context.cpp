@@ -60,8 +60,9 @@ bool layer_available(const char* name) {
   vkEnumerateInstanceLayerProperties(&count, nullptr);
   std::vector<VkLayerProperties> layers(count);
   vkEnumerateInstanceLayerProperties(&count, layers.data());
-  return std::any_of(layers.begin(), layers.end(),
-                     [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, name) == 0;
+  });
 }
 
 /// The graphics + compute queue family of a device, or -1.
@@ -81,9 +82,12 @@ int pick_queue_family(VkPhysicalDevice pd) {
 
 /// Snell's required features, queried or checked on `pd`. `missing` lists what lacks.
 struct FeatureChain {
-  VkPhysicalDeviceVulkan13Features f13 = vk_init<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-  VkPhysicalDeviceVulkan11Features f11 = vk_init<VkPhysicalDeviceVulkan11Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-  VkPhysicalDeviceFeatures2 f2 = vk_init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  VkPhysicalDeviceVulkan13Features f13 = vk_init<VkPhysicalDeviceVulkan13Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+  VkPhysicalDeviceVulkan11Features f11 = vk_init<VkPhysicalDeviceVulkan11Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
+  VkPhysicalDeviceFeatures2 f2 =
+      vk_init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
   FeatureChain() {
     f2.pNext = &f11;
     f11.pNext = &f13;
@@ -109,8 +113,10 @@ struct FeatureChain {
 DeviceInfo describe(VkPhysicalDevice pd) {
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(pd, &props);
-  VkPhysicalDeviceDriverProperties driver = vk_init<VkPhysicalDeviceDriverProperties>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
-  auto props2 = vk_init<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
+  VkPhysicalDeviceDriverProperties driver = vk_init<VkPhysicalDeviceDriverProperties>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
+  auto props2 =
+      vk_init<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
   props2.pNext = &driver;
   vkGetPhysicalDeviceProperties2(pd, &props2);
   DeviceInfo info;
@@ -170,7 +176,8 @@ Result<VkInstance> create_instance(const ContextDesc& desc, bool validation, Con
   app.apiVersion = VK_API_VERSION_1_3;
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
-  VkValidationFeaturesEXT features = vk_init<VkValidationFeaturesEXT>(VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT);
+  VkValidationFeaturesEXT features =
+      vk_init<VkValidationFeaturesEXT>(VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT);
   const VkValidationFeatureEnableEXT enabled[] = {
       VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   auto messenger = vk_init<VkDebugUtilsMessengerCreateInfoEXT>(
@@ -268,9 +275,10 @@ Result<void> init_common(Context::Impl& impl) {
   vkGetPhysicalDeviceProperties(impl.physical_device, &props);
   impl.limits = props.limits;
   vkGetPhysicalDeviceMemoryProperties(impl.physical_device, &impl.memory);
-  VkCommandPoolCreateInfo pci = vk_init<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
-  pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT |
-              VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  VkCommandPoolCreateInfo pci =
+      vk_init<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+  pci.flags =
+      VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT | VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   pci.queueFamilyIndex = impl.queue_family;
   SNELL_VK_TRY(vkCreateCommandPool(impl.device, &pci, nullptr, &impl.pool), "context command pool");
   VkFenceCreateInfo fci = vk_init<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
@@ -344,7 +352,8 @@ Result<Context> Context::create(const ContextDesc& desc) {
   enable.f2.features.shaderClipDistance = VK_TRUE;
   enable.f2.features.samplerAnisotropy = supported.f2.features.samplerAnisotropy;
   const float priority = 1.0f;
-  VkDeviceQueueCreateInfo qci = vk_init<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+  VkDeviceQueueCreateInfo qci =
+      vk_init<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
   qci.queueFamilyIndex = impl->queue_family;
   qci.queueCount = 1;
   qci.pQueuePriorities = &priority;
@@ -377,9 +386,9 @@ Result<Context> Context::adopt(const AdoptInfo& info) {
   vkGetPhysicalDeviceQueueFamilyProperties(info.physical_device, &count, families.data());
   const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   if (info.queue_family >= count || (families[info.queue_family].queueFlags & need) != need) {
-    return fail(ErrorCode::invalid_argument,
-                "AdoptInfo: queue_family " + std::to_string(info.queue_family) +
-                    " does not exist or lacks graphics + compute");
+    return fail(ErrorCode::invalid_argument, "AdoptInfo: queue_family " +
+                                                 std::to_string(info.queue_family) +
+                                                 " does not exist or lacks graphics + compute");
   }
   auto impl = std::make_unique<Impl>();
   impl->owns = false;
@@ -409,16 +418,36 @@ Result<std::vector<DeviceInfo>> Context::enumerate_devices() {
   return out;
 }
 
-VkInstance Context::instance() const { return impl_->instance; }
-VkPhysicalDevice Context::physical_device() const { return impl_->physical_device; }
-VkDevice Context::device() const { return impl_->device; }
-VkQueue Context::queue() const { return impl_->queue; }
-std::uint32_t Context::queue_family() const { return impl_->queue_family; }
-const DeviceInfo& Context::device_info() const { return impl_->info; }
-bool Context::owns_device() const { return impl_->owns; }
-bool Context::validation_enabled() const { return impl_->validation; }
-std::uint32_t Context::validation_error_count() const { return impl_->errors.load(); }
-std::uint32_t Context::validation_warning_count() const { return impl_->warnings.load(); }
+VkInstance Context::instance() const {
+  return impl_->instance;
+}
+VkPhysicalDevice Context::physical_device() const {
+  return impl_->physical_device;
+}
+VkDevice Context::device() const {
+  return impl_->device;
+}
+VkQueue Context::queue() const {
+  return impl_->queue;
+}
+std::uint32_t Context::queue_family() const {
+  return impl_->queue_family;
+}
+const DeviceInfo& Context::device_info() const {
+  return impl_->info;
+}
+bool Context::owns_device() const {
+  return impl_->owns;
+}
+bool Context::validation_enabled() const {
+  return impl_->validation;
+}
+std::uint32_t Context::validation_error_count() const {
+  return impl_->errors.load();
+}
+std::uint32_t Context::validation_warning_count() const {
+  return impl_->warnings.load();
+}
 std::vector<std::string> Context::validation_messages() const {
   std::lock_guard<std::mutex> lock(impl_->messages_mutex);
   return impl_->messages;
@@ -433,11 +462,12 @@ Result<std::uint32_t> Context::find_memory_type(std::uint32_t type_bits,
   return impl_->find_memory_type(type_bits, properties);
 }
 
-Result<void> Context::Impl::submit_and_wait(
-    const std::function<void(VkCommandBuffer)>& record) const {
+Result<void>
+Context::Impl::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
   const Impl* impl_ = this;
   std::lock_guard<std::mutex> lock(impl_->submit_mutex);
-  VkCommandBufferAllocateInfo ai = vk_init<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+  VkCommandBufferAllocateInfo ai =
+      vk_init<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   ai.commandPool = impl_->pool;
   ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   ai.commandBufferCount = 1;
@@ -449,12 +479,14 @@ Result<void> Context::Impl::submit_and_wait(
     VkCommandBuffer c;
     ~Free() { vkFreeCommandBuffers(d, p, 1, &c); }
   } free_on_exit{impl_->device, impl_->pool, cmd};
-  VkCommandBufferBeginInfo bi = vk_init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+  VkCommandBufferBeginInfo bi =
+      vk_init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   SNELL_VK_TRY(vkBeginCommandBuffer(cmd, &bi), "one-shot command buffer");
   record(cmd);
   SNELL_VK_TRY(vkEndCommandBuffer(cmd), "one-shot command buffer");
-  VkCommandBufferSubmitInfo cbi = vk_init<VkCommandBufferSubmitInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO);
+  VkCommandBufferSubmitInfo cbi =
+      vk_init<VkCommandBufferSubmitInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO);
   cbi.commandBuffer = cmd;
   VkSubmitInfo2 si = vk_init<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
   si.commandBufferInfoCount = 1;
@@ -475,9 +507,9 @@ Result<std::uint32_t> Context::Impl::find_memory_type(std::uint32_t type_bits,
       return i;
     }
   }
-  return fail(ErrorCode::out_of_memory,
-              "no memory type with properties " + std::to_string(properties) +
-                  " among allowed types " + std::to_string(type_bits));
+  return fail(ErrorCode::out_of_memory, "no memory type with properties " +
+                                            std::to_string(properties) + " among allowed types " +
+                                            std::to_string(type_bits));
 }
 
 } // namespace snell

@@ -2,8 +2,8 @@
 #include <snell/images.hpp>
 
 #include "barriers.hpp"
-#include "vk_util.hpp"
 #include "image_alloc.hpp"
+#include "vk_util.hpp"
 
 #include <utility>
 
@@ -50,7 +50,8 @@ Result<CubeTarget> CubeTarget::create(const Context& context, const CubeTargetDe
   auto view = [&](VkImage image, VkImageViewType type, VkFormat format, VkImageAspectFlags aspect,
                   std::uint32_t mips, std::uint32_t base_layer, std::uint32_t layers,
                   VkImageView& out) -> Result<void> {
-    auto v = detail::create_view(ctx, image, type, format, aspect, 0, mips, base_layer, layers, name);
+    auto v =
+        detail::create_view(ctx, image, type, format, aspect, 0, mips, base_layer, layers, name);
     if (!v) {
       return v.error();
     }
@@ -81,13 +82,17 @@ Result<CubeTarget> CubeTarget::create(const Context& context, const CubeTargetDe
   return t;
 }
 
-CubeTarget::CubeTarget(CubeTarget&& other) noexcept { swap(other); }
+CubeTarget::CubeTarget(CubeTarget&& other) noexcept {
+  swap(other);
+}
 CubeTarget& CubeTarget::operator=(CubeTarget&& other) noexcept {
   CubeTarget moved(std::move(other));
   swap(moved);
   return *this;
 }
-CubeTarget::~CubeTarget() { reset(); }
+CubeTarget::~CubeTarget() {
+  reset();
+}
 
 void CubeTarget::swap(CubeTarget& o) noexcept {
   std::swap(ctx_, o.ctx_);
@@ -138,13 +143,15 @@ void CubeTarget::begin_capture(VkCommandBuffer cmd) const {
 namespace {
 void begin(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view, std::uint32_t size,
            std::uint32_t view_mask, const float clear[4]) {
-  VkRenderingAttachmentInfo color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  VkRenderingAttachmentInfo color =
+      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   color.imageView = color_view;
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
-  VkRenderingAttachmentInfo depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  VkRenderingAttachmentInfo depth =
+      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   depth.imageView = depth_view;
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -158,8 +165,8 @@ void begin(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view, 
   ri.pColorAttachments = &color;
   ri.pDepthAttachment = &depth;
   vkCmdBeginRendering(cmd, &ri);
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(size), static_cast<float>(size), 0.0f,
-                            1.0f};
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(size), static_cast<float>(size),
+                            0.0f, 1.0f};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   const VkRect2D scissor{{0, 0}, {size, size}};
   vkCmdSetScissor(cmd, 0, 1, &scissor);
@@ -170,20 +177,23 @@ void CubeTarget::begin_face(VkCommandBuffer cmd, std::uint32_t face, const float
   begin(cmd, face_views_[face % 6], depth_face_views_[face % 6], size_, 0, clear);
 }
 
-void CubeTarget::end_face(VkCommandBuffer cmd) const { vkCmdEndRendering(cmd); }
+void CubeTarget::end_face(VkCommandBuffer cmd) const {
+  vkCmdEndRendering(cmd);
+}
 
 void CubeTarget::begin_multiview(VkCommandBuffer cmd, const float clear[4]) const {
   begin(cmd, array_view_, depth_array_view_, size_, 0x3Fu, clear);
 }
 
-void CubeTarget::end_multiview(VkCommandBuffer cmd) const { vkCmdEndRendering(cmd); }
+void CubeTarget::end_multiview(VkCommandBuffer cmd) const {
+  vkCmdEndRendering(cmd);
+}
 
 void CubeTarget::end_capture(VkCommandBuffer cmd) const {
   if (mips_ > 1) {
-    detail::generate_mips(cmd, color_, size_, size_, mips_, 6,
-                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    detail::generate_mips(
+        cmd, color_, size_, size_, mips_, 6, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     return;
   }
   detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 6,

@@ -16,8 +16,8 @@ Result<DebugOverlay> DebugOverlay::create(const Context::Impl& ctx, VkFormat col
   const VkDevice d = ctx.device;
   const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                              VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  auto lci = vk_init<VkDescriptorSetLayoutCreateInfo>(
-      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  auto lci =
+      vk_init<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   lci.bindingCount = 1;
   lci.pBindings = &binding;
   SNELL_VK_TRY(vkCreateDescriptorSetLayout(d, &lci, nullptr, &o.set_layout_), "debug overlay");
@@ -77,7 +77,9 @@ Result<DebugOverlay> DebugOverlay::create(const Context::Impl& ctx, VkFormat col
   return o;
 }
 
-DebugOverlay::DebugOverlay(DebugOverlay&& o) noexcept { swap(o); }
+DebugOverlay::DebugOverlay(DebugOverlay&& o) noexcept {
+  swap(o);
+}
 DebugOverlay& DebugOverlay::operator=(DebugOverlay&& o) noexcept {
   DebugOverlay moved(std::move(o));
   swap(moved);

@@ -115,7 +115,10 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
   s.target.end_rendering(cmd);
   s.timer.end(cmd);
   if (s.desc.debug_targets) {
-    std::vector<DebugTarget> thumbs = hooks.debug_targets;
+    std::vector<DebugTarget> thumbs;
+    if (hooks.debug_targets) {
+      thumbs = hooks.debug_targets();
+    }
     thumbs.push_back(DebugTarget{"depth", s.target.depth_view(), true});
     s.timer.begin(cmd, "debug_targets");
     s.target.begin_overlay(cmd);
@@ -149,7 +152,9 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
   return stats;
 }
 
-const RenderTarget& FrameRenderer::target() const { return impl_->target; }
+const RenderTarget& FrameRenderer::target() const {
+  return impl_->target;
+}
 
 Result<Image> FrameRenderer::read_color() const {
   return detail::read_rgba8(*impl_->ctx, impl_->target, 0);

@@ -80,15 +80,15 @@ Result<std::vector<PassTime>> GpuTimer::read() const {
     return out;
   }
   if (ended_ != names_.size()) {
-    return fail(ErrorCode::invalid_argument, "GpuTimer::read: " +
-                                                 std::to_string(names_.size() - ended_) +
-                                                 " pass(es) begun but not ended");
+    return fail(ErrorCode::invalid_argument,
+                "GpuTimer::read: " + std::to_string(names_.size() - ended_) +
+                    " pass(es) begun but not ended");
   }
   std::vector<std::uint64_t> ticks(2 * names_.size());
-  SNELL_VK_TRY(vkGetQueryPoolResults(ctx_->device, pool_, 0, static_cast<std::uint32_t>(ticks.size()),
-                                     ticks.size() * sizeof(std::uint64_t), ticks.data(),
-                                     sizeof(std::uint64_t),
-                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+  SNELL_VK_TRY(vkGetQueryPoolResults(
+                   ctx_->device, pool_, 0, static_cast<std::uint32_t>(ticks.size()),
+                   ticks.size() * sizeof(std::uint64_t), ticks.data(), sizeof(std::uint64_t),
+                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
                "reading GPU timestamps");
   const double period_ms = ctx_->info.timestamp_period_ns * 1e-6;
   for (std::size_t i = 0; i < names_.size(); ++i) {

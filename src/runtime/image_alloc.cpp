@@ -35,11 +35,11 @@ Result<void> create_image(const Context::Impl& ctx, const VkImageCreateInfo& ci,
 }
 
 Result<VkImageView> create_view(const Context::Impl& ctx, VkImage image, VkImageViewType type,
-                                VkFormat format, VkImageAspectFlags aspect,
-                                std::uint32_t base_mip, std::uint32_t mip_count,
-                                std::uint32_t base_layer, std::uint32_t layer_count,
-                                std::string_view name) {
-  VkImageViewCreateInfo ci = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+                                VkFormat format, VkImageAspectFlags aspect, std::uint32_t base_mip,
+                                std::uint32_t mip_count, std::uint32_t base_layer,
+                                std::uint32_t layer_count, std::string_view name) {
+  VkImageViewCreateInfo ci =
+      vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
   ci.image = image;
   ci.viewType = type;
   ci.format = format;
@@ -53,10 +53,10 @@ Result<void> check_extent(const Context::Impl& ctx, std::string_view what, std::
                           std::uint32_t height) {
   const std::uint32_t limit = std::min(kMaxImageDimension, ctx.limits.maxImageDimension2D);
   if (width == 0 || height == 0 || width > limit || height > limit) {
-    return fail(ErrorCode::invalid_argument,
-                std::string(what) + ": size " + std::to_string(width) + "x" +
-                    std::to_string(height) + " is out of range (each side 1.." +
-                    std::to_string(limit) + ")");
+    return fail(ErrorCode::invalid_argument, std::string(what) + ": size " + std::to_string(width) +
+                                                 "x" + std::to_string(height) +
+                                                 " is out of range (each side 1.." +
+                                                 std::to_string(limit) + ")");
   }
   return {};
 }

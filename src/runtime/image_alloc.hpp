@@ -14,10 +14,9 @@ Result<void> create_image(const Context::Impl& ctx, const VkImageCreateInfo& ci,
 
 /// Creates a view of `image`.
 Result<VkImageView> create_view(const Context::Impl& ctx, VkImage image, VkImageViewType type,
-                                VkFormat format, VkImageAspectFlags aspect,
-                                std::uint32_t base_mip, std::uint32_t mip_count,
-                                std::uint32_t base_layer, std::uint32_t layer_count,
-                                std::string_view name);
+                                VkFormat format, VkImageAspectFlags aspect, std::uint32_t base_mip,
+                                std::uint32_t mip_count, std::uint32_t base_layer,
+                                std::uint32_t layer_count, std::string_view name);
 
 /// Checks a width x height against 1..kMaxImageDimension and the device limit; names `what`.
 Result<void> check_extent(const Context::Impl& ctx, std::string_view what, std::uint32_t width,

@@ -21,8 +21,8 @@ Result<VkShaderModule> create_shader_module(VkDevice device, std::span<const std
 Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& desc,
                                             std::string_view name) {
   VkPipelineShaderStageCreateInfo stages[2];
-  stages[0] = vk_init<VkPipelineShaderStageCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+  stages[0] =
+      vk_init<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
   stages[0].module = desc.vertex;
   stages[0].pName = "main";
@@ -93,8 +93,7 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
   rendering.colorAttachmentCount = 1;
   rendering.pColorAttachmentFormats = &desc.color_format;
   rendering.depthAttachmentFormat = desc.depth_format;
-  auto ci =
-      vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+  auto ci = vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
   ci.pNext = &rendering;
   ci.stageCount = 2;
   ci.pStages = stages;
@@ -108,8 +107,7 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
   ci.pDynamicState = &dyn;
   ci.layout = desc.layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  SNELL_VK_TRY(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
-               name);
+  SNELL_VK_TRY(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline), name);
   return pipeline;
 }
 

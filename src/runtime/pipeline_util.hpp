@@ -23,11 +23,11 @@ struct GraphicsPipelineDesc {
   VkFormat color_format = VK_FORMAT_UNDEFINED;
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   std::uint32_t view_mask = 0;
-  bool vertex_input = true;     ///< Snell's Vertex layout (else no vertex buffers).
+  bool vertex_input = true; ///< Snell's Vertex layout (else no vertex buffers).
   bool depth_test = true;
   bool depth_write = true;
   VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
-  bool alpha_blend = false;     ///< Premultiplied-free "over" blending.
+  bool alpha_blend = false; ///< Premultiplied-free "over" blending.
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
 };
 

@@ -18,10 +18,9 @@ using detail::ImageBarrier;
 
 /// Copies one subresource (in SHADER_READ_ONLY_OPTIMAL) into a host buffer and back.
 Result<std::vector<std::uint8_t>> read_subresource(const Context::Impl& ctx, VkImage image,
-                                                   VkImageAspectFlags aspect,
-                                                   std::uint32_t width, std::uint32_t height,
-                                                   std::uint32_t level, std::uint32_t layer,
-                                                   std::uint32_t texel_bytes) {
+                                                   VkImageAspectFlags aspect, std::uint32_t width,
+                                                   std::uint32_t height, std::uint32_t level,
+                                                   std::uint32_t layer, std::uint32_t texel_bytes) {
   const VkDeviceSize bytes = VkDeviceSize{width} * height * texel_bytes;
   auto buffer = detail::create_buffer(
       ctx, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback, "readback"});
@@ -29,22 +28,21 @@ Result<std::vector<std::uint8_t>> read_subresource(const Context::Impl& ctx, VkI
     return buffer.error();
   }
   auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    detail::barrier(cmd, ImageBarrier{image, aspect, level, 1, layer, 1,
-                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                      VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                                      VK_ACCESS_2_TRANSFER_READ_BIT});
+    detail::barrier(cmd,
+                    ImageBarrier{image, aspect, level, 1, layer, 1,
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                 VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                                 VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
     VkBufferImageCopy region{};
     region.imageSubresource = {aspect, level, layer, 1};
     region.imageExtent = {width, height, 1};
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer->handle(), 1,
                            &region);
-    detail::barrier(cmd, ImageBarrier{image, aspect, level, 1, layer, 1,
-                                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                                      detail::kReadStages, detail::kReadAccess});
+    detail::barrier(
+        cmd, ImageBarrier{image, aspect, level, 1, layer, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_NONE, detail::kReadStages, detail::kReadAccess});
   });
   if (!r) {
     return r.error();
@@ -120,8 +118,8 @@ Result<Image> detail::read_rgba8(const Context::Impl& ctx, const RenderTarget& t
     }
     return tonemap(*f);
   }
-  auto bytes = read_subresource(ctx, target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h,
-                                level, 0, 4);
+  auto bytes =
+      read_subresource(ctx, target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h, level, 0, 4);
   if (!bytes) {
     return bytes.error();
   }
@@ -144,20 +142,20 @@ Result<FloatImage> detail::read_float(const Context::Impl& ctx, const RenderTarg
   const std::uint32_t w = level_extent(target.width(), level);
   const std::uint32_t h = level_extent(target.height(), level);
   const std::uint32_t texel = target.color_format() == ColorFormat::rgba16_float ? 8 : 4;
-  auto bytes = read_subresource(ctx, target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h,
-                                level, 0, texel);
+  auto bytes =
+      read_subresource(ctx, target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, w, h, level, 0, texel);
   if (!bytes) {
     return bytes.error();
   }
   return to_float(*bytes, target.color_format(), w, h);
 }
 
-Result<Image> read_cube_face_rgba8(const Context& ctx, const CubeTarget& target,
-                                   std::uint32_t face, std::uint32_t level) {
+Result<Image> read_cube_face_rgba8(const Context& ctx, const CubeTarget& target, std::uint32_t face,
+                                   std::uint32_t level) {
   if (!target || face >= 6 || level >= target.mip_levels()) {
-    return fail(ErrorCode::invalid_argument,
-                "read_cube_face_rgba8: face " + std::to_string(face) + " (0..5) or level " +
-                    std::to_string(level) + " out of range");
+    return fail(ErrorCode::invalid_argument, "read_cube_face_rgba8: face " + std::to_string(face) +
+                                                 " (0..5) or level " + std::to_string(level) +
+                                                 " out of range");
   }
   const std::uint32_t s = level_extent(target.size(), level);
   const bool half = target.color_format() == ColorFormat::rgba16_float;

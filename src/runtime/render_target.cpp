@@ -2,8 +2,8 @@
 #include <snell/images.hpp>
 
 #include "barriers.hpp"
-#include "vk_util.hpp"
 #include "image_alloc.hpp"
+#include "vk_util.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -92,13 +92,17 @@ Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTa
   return t;
 }
 
-RenderTarget::RenderTarget(RenderTarget&& other) noexcept { swap(other); }
+RenderTarget::RenderTarget(RenderTarget&& other) noexcept {
+  swap(other);
+}
 RenderTarget& RenderTarget::operator=(RenderTarget&& other) noexcept {
   RenderTarget moved(std::move(other));
   swap(moved);
   return *this;
 }
-RenderTarget::~RenderTarget() { reset(); }
+RenderTarget::~RenderTarget() {
+  reset();
+}
 
 void RenderTarget::swap(RenderTarget& o) noexcept {
   std::swap(ctx_, o.ctx_);
@@ -141,13 +145,15 @@ void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
   };
   detail::barrier(cmd, barriers, depth_ != VK_NULL_HANDLE ? 2 : 1);
 
-  VkRenderingAttachmentInfo color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  VkRenderingAttachmentInfo color =
+      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   color.imageView = color_level0_view_;
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
-  VkRenderingAttachmentInfo depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  VkRenderingAttachmentInfo depth =
+      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   depth.imageView = depth_view_;
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -168,13 +174,13 @@ void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
 }
 
 void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
-  detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages,
-                                    VK_ACCESS_2_NONE,
-                                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-                                        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+  detail::barrier(
+      cmd,
+      ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
   auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   color.imageView = color_level0_view_;
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -193,15 +199,16 @@ void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void RenderTarget::end_overlay(VkCommandBuffer cmd) const { finish_color(cmd); }
+void RenderTarget::end_overlay(VkCommandBuffer cmd) const {
+  finish_color(cmd);
+}
 
 void RenderTarget::finish_color(VkCommandBuffer cmd) const {
   vkCmdEndRendering(cmd);
   if (mips_ > 1) {
-    detail::generate_mips(cmd, color_, width_, height_, mips_, 1,
-                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    detail::generate_mips(
+        cmd, color_, width_, height_, mips_, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
   } else {
     detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
                                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

@@ -182,7 +182,8 @@ Result<void> SceneRenderer::Impl::init(const Context& context) {
   sampler = std::move(*s);
 
   // Per-view uniform ring.
-  const VkDeviceSize align = std::max<VkDeviceSize>(ctx->limits.minUniformBufferOffsetAlignment, 16);
+  const VkDeviceSize align =
+      std::max<VkDeviceSize>(ctx->limits.minUniformBufferOffsetAlignment, 16);
   view_stride = (sizeof(ViewBlock) + align - 1) / align * align;
   auto ring = Buffer::create(context, BufferDesc{view_stride * kMaxViewsInFlight,
                                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -193,12 +194,11 @@ Result<void> SceneRenderer::Impl::init(const Context& context) {
   view_ring = std::move(*ring);
 
   // Descriptor layouts, pool, sets.
-  VkDescriptorSetLayoutBinding view_binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1,
-                                            VK_SHADER_STAGE_VERTEX_BIT |
-                                                VK_SHADER_STAGE_FRAGMENT_BIT,
-                                            nullptr};
-  auto lci = vk_init<VkDescriptorSetLayoutCreateInfo>(
-      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  VkDescriptorSetLayoutBinding view_binding{
+      0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1,
+      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  auto lci =
+      vk_init<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   lci.bindingCount = 1;
   lci.pBindings = &view_binding;
   SNELL_VK_TRY(vkCreateDescriptorSetLayout(d, &lci, nullptr, &view_layout), "scene view layout");
@@ -347,8 +347,12 @@ Result<SceneRenderer> SceneRenderer::create(const Context& ctx, const Scene& sce
   return SceneRenderer(std::move(impl));
 }
 
-const Scene& SceneRenderer::scene() const { return impl_->scene; }
-const std::string& SceneRenderer::last_error() const { return impl_->error; }
+const Scene& SceneRenderer::scene() const {
+  return impl_->scene;
+}
+const std::string& SceneRenderer::last_error() const {
+  return impl_->error;
+}
 
 void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
   Impl& s = *impl_;
@@ -363,14 +367,14 @@ void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
   ViewBlock block{};
   const bool multi = view.view_mask != 0;
   for (int i = 0; i < 6; ++i) {
-    const glm::mat4 vp = multi ? view.multiview_view_proj[static_cast<std::size_t>(i)]
-                               : view.proj * view.view;
+    const glm::mat4 vp =
+        multi ? view.multiview_view_proj[static_cast<std::size_t>(i)] : view.proj * view.view;
     block.view_proj[i] = vp;
     block.inv_view_proj[i] = glm::inverse(vp);
   }
   block.eye = glm::vec4(view.eye, 1.0f);
-  block.clip_plane = view.clip_plane ? to_vec4(normalize(*view.clip_plane))
-                                     : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  block.clip_plane =
+      view.clip_plane ? to_vec4(normalize(*view.clip_plane)) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   const DirectionalLight& light = s.scene.light;
   block.light_dir = glm::vec4(glm::normalize(light.direction), light.intensity);
   block.light_color = glm::vec4(light.color, 1.0f);
@@ -405,16 +409,16 @@ void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
             ? static_cast<std::size_t>(mesh.material)
             : s.scene.materials.size();
     const Material fallback;
-    const Material& mat = mat_index < s.scene.materials.size() ? s.scene.materials[mat_index]
-                                                               : fallback;
+    const Material& mat =
+        mat_index < s.scene.materials.size() ? s.scene.materials[mat_index] : fallback;
     DrawBlock push{};
     push.model = o.world_at(view.time);
     push.base_color = mat.base_color;
     push.emissive = glm::vec4(mat.emissive, mat.base_color_texture >= 0 ? 1.0f : 0.0f);
     push.params = glm::vec4(mat.roughness, mat.specular, mat.normal_scale,
                             mat.alpha_mode == AlphaMode::mask ? mat.alpha_cutoff : -1.0f);
-    push.flags = glm::vec4(mat.normal_texture >= 0 ? 1.0f : 0.0f, mat.uv_scale.x, mat.uv_scale.y,
-                           0.0f);
+    push.flags =
+        glm::vec4(mat.normal_texture >= 0 ? 1.0f : 0.0f, mat.uv_scale.x, mat.uv_scale.y, 0.0f);
     // Winding: the view's flip XOR a mirroring model transform (negative scale).
     const bool flip = view.flip_front_face != (glm::determinant(glm::mat3(push.model)) < 0.0f);
     vkCmdSetFrontFace(cmd, flip ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
@@ -435,10 +439,9 @@ void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
       continue;
     }
     const Mesh& mesh = s.scene.meshes[static_cast<std::size_t>(o.mesh)];
-    const bool blend = mesh.material >= 0 &&
-                       static_cast<std::size_t>(mesh.material) < s.scene.materials.size() &&
-                       s.scene.materials[static_cast<std::size_t>(mesh.material)].alpha_mode ==
-                           AlphaMode::blend;
+    const bool blend =
+        mesh.material >= 0 && static_cast<std::size_t>(mesh.material) < s.scene.materials.size() &&
+        s.scene.materials[static_cast<std::size_t>(mesh.material)].alpha_mode == AlphaMode::blend;
     if (blend) {
       const glm::vec3 centre = glm::vec3(o.world_at(view.time)[3]);
       blended.push_back({glm::length(centre - view.eye), i});

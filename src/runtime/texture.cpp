@@ -65,12 +65,11 @@ Result<Texture2D> Texture2D::create(const Context& context, const Image& image, 
   const VkImage img = t.image_;
   const std::uint32_t levels = t.mips_;
   auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    detail::barrier(cmd, ImageBarrier{img, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
-                                      VK_IMAGE_LAYOUT_UNDEFINED,
-                                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                      VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                                      VK_PIPELINE_STAGE_2_COPY_BIT,
-                                      VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    detail::barrier(cmd,
+                    ImageBarrier{img, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
+                                 VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                 VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                                 VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {image.width, image.height, 1};
@@ -115,8 +114,8 @@ Result<Texture2D> Texture2D::load(const Context& ctx, const std::filesystem::pat
                                                std::to_string(h) + " exceeds " +
                                                std::to_string(kMaxImageDimension) + " per side");
   }
-  unsigned char* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(size), &w, &h,
-                                                &comp, 4);
+  unsigned char* pixels =
+      stbi_load_from_memory(bytes.data(), static_cast<int>(size), &w, &h, &comp, 4);
   if (pixels == nullptr) {
     return fail(ErrorCode::parse_error,
                 file.string() + ": decoding failed (" + stbi_failure_reason() + ")");
@@ -131,13 +130,17 @@ Result<Texture2D> Texture2D::load(const Context& ctx, const std::filesystem::pat
   return create(ctx, image, mips);
 }
 
-Texture2D::Texture2D(Texture2D&& other) noexcept { swap(other); }
+Texture2D::Texture2D(Texture2D&& other) noexcept {
+  swap(other);
+}
 Texture2D& Texture2D::operator=(Texture2D&& other) noexcept {
   Texture2D moved(std::move(other));
   swap(moved);
   return *this;
 }
-Texture2D::~Texture2D() { reset(); }
+Texture2D::~Texture2D() {
+  reset();
+}
 void Texture2D::swap(Texture2D& o) noexcept {
   std::swap(ctx_, o.ctx_);
   std::swap(image_, o.image_);
@@ -163,11 +166,10 @@ Result<Sampler> Sampler::create(const Context& context, const SamplerDesc& desc)
   ci.magFilter = desc.linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
   ci.minFilter = ci.magFilter;
   ci.mipmapMode = desc.linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  const VkSamplerAddressMode mode = desc.address == AddressMode::repeat
-                                        ? VK_SAMPLER_ADDRESS_MODE_REPEAT
-                                    : desc.address == AddressMode::mirrored_repeat
-                                        ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
-                                        : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  const VkSamplerAddressMode mode =
+      desc.address == AddressMode::repeat            ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+      : desc.address == AddressMode::mirrored_repeat ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
+                                                     : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   ci.addressModeU = ci.addressModeV = ci.addressModeW = mode;
   ci.maxLod = desc.mipmaps ? VK_LOD_CLAMP_NONE : 0.0f;
   VkPhysicalDeviceFeatures features{};
@@ -182,7 +184,9 @@ Result<Sampler> Sampler::create(const Context& context, const SamplerDesc& desc)
   SNELL_VK_TRY(vkCreateSampler(ctx.device, &ci, nullptr, &s.sampler_), "sampler");
   return s;
 }
-Sampler::Sampler(Sampler&& other) noexcept { swap(other); }
+Sampler::Sampler(Sampler&& other) noexcept {
+  swap(other);
+}
 Sampler& Sampler::operator=(Sampler&& other) noexcept {
   Sampler moved(std::move(other));
   swap(moved);

@@ -32,10 +32,10 @@ std::string vk_result_name(VkResult result) {
 }
 
 Error vk_error(std::string_view call, VkResult result, std::string_view what) {
-  const ErrorCode code = (result == VK_ERROR_OUT_OF_HOST_MEMORY ||
-                          result == VK_ERROR_OUT_OF_DEVICE_MEMORY)
-                             ? ErrorCode::out_of_memory
-                             : ErrorCode::vulkan_error;
+  const ErrorCode code =
+      (result == VK_ERROR_OUT_OF_HOST_MEMORY || result == VK_ERROR_OUT_OF_DEVICE_MEMORY)
+          ? ErrorCode::out_of_memory
+          : ErrorCode::vulkan_error;
   std::string message(call);
   message += " failed with " + vk_result_name(result);
   if (!what.empty()) {

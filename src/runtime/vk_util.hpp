@@ -27,10 +27,10 @@ template <class T> [[nodiscard]] T vk_init(VkStructureType type) {
 } // namespace snell::detail
 
 /// Returns a vk_error from the enclosing function when a Vulkan call fails.
-#define SNELL_VK_TRY(call, what)                                                                 \
+#define SNELL_VK_TRY(call, what)                                                                   \
   do {                                                                                             \
     const VkResult snell_vk_result_ = (call);                                                      \
     if (snell_vk_result_ != VK_SUCCESS) {                                                          \
-      return ::snell::detail::vk_error(#call, snell_vk_result_, (what));                          \
+      return ::snell::detail::vk_error(#call, snell_vk_result_, (what));                           \
     }                                                                                              \
   } while (false)

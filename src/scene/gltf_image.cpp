@@ -8,6 +8,7 @@
 
 #include <cstring>
 #include <memory>
+#include <vector>
 
 namespace snell::detail {
 namespace {
@@ -25,6 +26,44 @@ std::string describe(const tinygltf::Image& image, int index) {
 
 bool has_prefix(const unsigned char* bytes, int size, const unsigned char* magic, int length) {
   return size >= length && std::memcmp(bytes, magic, static_cast<std::size_t>(length)) == 0;
+}
+
+// The PNG without its empty IDAT chunks, or an empty vector when it has none (the common case:
+// no copy is needed). stb_image (2022-09 Debian build) copies an empty IDAT chunk with
+// memcpy(nullptr, ..., 0) before it has allocated its buffer: harmless in practice, but undefined
+// behaviour that the sanitizers report. An empty IDAT chunk carries no image data, so dropping it
+// changes nothing else.
+std::vector<unsigned char> without_empty_idat(const unsigned char* bytes, std::size_t size) {
+  auto be32 = [bytes](std::size_t at) {
+    return (static_cast<std::uint32_t>(bytes[at]) << 24) |
+           (static_cast<std::uint32_t>(bytes[at + 1]) << 16) |
+           (static_cast<std::uint32_t>(bytes[at + 2]) << 8) |
+           static_cast<std::uint32_t>(bytes[at + 3]);
+  };
+  std::vector<std::size_t> empty_chunks;
+  std::size_t at = 8; // After the signature.
+  while (at + 12 <= size) {
+    const std::uint64_t length = be32(at);
+    if (length == 0 && std::memcmp(bytes + at + 4, "IDAT", 4) == 0) {
+      empty_chunks.push_back(at);
+    }
+    if (length > size - at - 12) {
+      break; // Truncated: leave the rest to stb_image, which reports it.
+    }
+    at += 12 + static_cast<std::size_t>(length);
+  }
+  std::vector<unsigned char> out;
+  if (empty_chunks.empty()) {
+    return out;
+  }
+  out.reserve(size);
+  std::size_t from = 0;
+  for (const std::size_t chunk : empty_chunks) {
+    out.insert(out.end(), bytes + from, bytes + chunk);
+    from = chunk + 12; // Length, type and CRC of an empty chunk.
+  }
+  out.insert(out.end(), bytes + from, bytes + size);
+  return out;
 }
 
 } // namespace
@@ -56,6 +95,14 @@ bool load_image_data(tinygltf::Image* image, int image_index, std::string* err, 
   if (!has_prefix(bytes, size, png_magic, sizeof png_magic) &&
       !has_prefix(bytes, size, jpeg_magic, sizeof jpeg_magic)) {
     return refuse(ErrorCode::unsupported, "not a PNG or JPEG image (the formats of glTF 2.0)");
+  }
+  std::vector<unsigned char> cleaned;
+  if (has_prefix(bytes, size, png_magic, sizeof png_magic)) {
+    cleaned = without_empty_idat(bytes, static_cast<std::size_t>(size));
+    if (!cleaned.empty()) {
+      bytes = cleaned.data();
+      size = static_cast<int>(cleaned.size());
+    }
   }
   int width = 0;
   int height = 0;

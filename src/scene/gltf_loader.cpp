@@ -110,8 +110,11 @@ Result<Scene> load(const std::uint8_t* data, std::size_t size,
   } catch (const std::bad_alloc&) {
     return ctx.fail(ErrorCode::out_of_memory, "out of memory while parsing");
   } catch (const std::exception& e) {
-    // tinygltf is built with exceptions, and nlohmann/json may throw from inside it.
-    return ctx.fail(ErrorCode::parse_error, std::string("not a valid glTF file: ") + e.what());
+    // tinygltf is built with exceptions, and nlohmann/json may throw from inside it. A failure a
+    // callback recorded before is the more precise report.
+    return ctx.error ? *ctx.error
+                     : ctx.fail(ErrorCode::parse_error,
+                                std::string("not a valid glTF file: ") + e.what());
   }
   const std::string empty_hint = size == 0 ? " (empty file)" : "";
   if (!checked) {

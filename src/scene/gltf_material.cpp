@@ -4,6 +4,7 @@
 #include "gltf_uri.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace snell::detail {
@@ -32,7 +33,9 @@ Result<std::optional<double>> extension_number(const tinygltf::Material& materia
     return std::optional<double>(fallback);
   }
   const tinygltf::Value& value = it->second.Get(key);
-  if (!value.IsNumber() || !std::isfinite(value.GetNumberAsDouble())) {
+  if (!value.IsNumber() || !std::isfinite(value.GetNumberAsDouble()) ||
+      std::abs(value.GetNumberAsDouble()) >
+          static_cast<double>(std::numeric_limits<float>::max())) {
     return ctx.fail(ErrorCode::parse_error,
                     what + ": " + extension + "." + key + " is not a finite number");
   }
@@ -115,6 +118,10 @@ Result<void> convert_materials(const tinygltf::Model& model, Scene& scene,
         return ctx.fail(ErrorCode::parse_error, what + ": emissiveStrength is negative");
       }
       m.emissive *= static_cast<float>(**strength);
+      if (!std::isfinite(m.emissive.x + m.emissive.y + m.emissive.z)) {
+        return ctx.fail(ErrorCode::parse_error,
+                        what + ": emissiveFactor * emissiveStrength is not a finite float");
+      }
     }
     if (*transmission) {
       if (!(**transmission >= 0.0 && **transmission <= 1.0)) {

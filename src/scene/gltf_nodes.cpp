@@ -1,6 +1,8 @@
 // Internal: the glTF node hierarchy (see gltf_nodes.hpp).
 #include "gltf_nodes.hpp"
 
+#include "mesh_utils.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -206,9 +209,9 @@ private:
         m_.cameras[static_cast<std::size_t>(node.camera)].type == "perspective") {
       const tinygltf::Camera& source = m_.cameras[static_cast<std::size_t>(node.camera)];
       // A glTF camera looks down its node's -Z with +Y up.
-      const glm::vec3 forward = basis * glm::vec3(0.0f, 0.0f, -1.0f);
-      const glm::vec3 up = basis * glm::vec3(0.0f, 1.0f, 0.0f);
-      if (!(glm::length(forward) > 1e-12f) || !(glm::length(up) > 1e-12f)) {
+      const std::optional<glm::vec3> forward = safe_normalize(basis * glm::vec3(0.0f, 0.0f, -1.0f));
+      const std::optional<glm::vec3> up = safe_normalize(basis * glm::vec3(0.0f, 1.0f, 0.0f));
+      if (!forward || !up) {
         return ctx_.fail(ErrorCode::parse_error,
                          what + ": the transform of its camera is degenerate (zero scale)");
       }
@@ -217,8 +220,11 @@ private:
                  : !node.name.empty() ? node.name
                                       : "camera " + std::to_string(node.camera);
       cam.eye = glm::vec3(world[3]);
-      cam.target = cam.eye + glm::normalize(forward);
-      cam.up = glm::normalize(up);
+      cam.target = cam.eye + *forward;
+      cam.up = *up;
+      if (!std::isfinite(cam.target.x + cam.target.y + cam.target.z)) {
+        return ctx_.fail(ErrorCode::parse_error, what + ": its camera's position is not finite");
+      }
       cam.yfov = static_cast<float>(source.perspective.yfov);
       cam.z_near = static_cast<float>(source.perspective.znear);
       cam.z_far = source.perspective.zfar == 0.0 ? std::numeric_limits<float>::infinity()
@@ -231,12 +237,14 @@ private:
       const tinygltf::Light& light =
           m_.lights[static_cast<std::size_t>(ext->second.Get("light").Get<int>())];
       if (light.type == "directional") {
-        const glm::vec3 direction = basis * glm::vec3(0.0f, 0.0f, -1.0f); // Lights shine down -Z.
-        if (!(glm::length(direction) > 1e-12f)) {
+        // Lights shine down their node's -Z.
+        const std::optional<glm::vec3> direction =
+            safe_normalize(basis * glm::vec3(0.0f, 0.0f, -1.0f));
+        if (!direction) {
           return ctx_.fail(ErrorCode::parse_error,
                            what + ": the transform of its light is degenerate (zero scale)");
         }
-        scene_.light.direction = glm::normalize(direction);
+        scene_.light.direction = *direction;
         if (light.color.size() == 3) {
           scene_.light.color = glm::vec3(light.color[0], light.color[1], light.color[2]);
         } else {

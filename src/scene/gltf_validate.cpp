@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -26,9 +27,15 @@ template <class T> bool in_range(int index, const std::vector<T>& items) {
   return index >= 0 && static_cast<std::size_t>(index) < items.size();
 }
 
+// The converter stores file values as float: a finite double beyond FLT_MAX would not convert
+// (undefined behaviour in C++), so "finite" here means "a finite float".
+bool finite_float(double v) {
+  return std::isfinite(v) && std::abs(v) <= static_cast<double>(std::numeric_limits<float>::max());
+}
+
 bool all_finite(const std::vector<double>& values) {
   for (const double v : values) {
-    if (!std::isfinite(v)) {
+    if (!finite_float(v)) {
       return false;
     }
   }
@@ -270,11 +277,11 @@ private:
         return fail(what + ": roughnessFactor " + std::to_string(pbr.roughnessFactor) +
                     " is outside [0, 1]");
       }
-      if (!(mat.alphaCutoff >= 0.0) || !std::isfinite(mat.alphaCutoff)) {
+      if (!(mat.alphaCutoff >= 0.0) || !finite_float(mat.alphaCutoff)) {
         return fail(what + ": alphaCutoff " + std::to_string(mat.alphaCutoff) +
                     " is not a finite number >= 0");
       }
-      if (!std::isfinite(mat.normalTexture.scale)) {
+      if (!finite_float(mat.normalTexture.scale)) {
         return fail(what + ": normalTexture.scale is not finite");
       }
       if (mat.alphaMode != "OPAQUE" && mat.alphaMode != "MASK" && mat.alphaMode != "BLEND") {
@@ -375,11 +382,13 @@ private:
       if (!(p.yfov > 0.0 && p.yfov < 3.14159265358979)) {
         return fail(what + ": yfov " + std::to_string(p.yfov) + " is outside (0, pi)");
       }
-      if (!(p.znear > 0.0) || !std::isfinite(p.znear)) {
+      // Compared as the floats CameraDesc will hold.
+      if (!finite_float(p.znear) || !(static_cast<float>(p.znear) > 0.0f)) {
         return fail(what + ": znear " + std::to_string(p.znear) + " is not a finite number > 0");
       }
       // tinygltf stores an absent zfar as 0: an infinite far plane.
-      if (p.zfar != 0.0 && !(p.zfar > p.znear && std::isfinite(p.zfar))) {
+      if (p.zfar != 0.0 &&
+          !(finite_float(p.zfar) && static_cast<float>(p.zfar) > static_cast<float>(p.znear))) {
         return fail(what + ": zfar " + std::to_string(p.zfar) + " is not greater than znear");
       }
     }
@@ -393,7 +402,7 @@ private:
       if (!light.color.empty() && (light.color.size() != 3 || !all_finite(light.color))) {
         return fail(what + ": color must be 3 finite numbers");
       }
-      if (!(light.intensity >= 0.0) || !std::isfinite(light.intensity)) {
+      if (!(light.intensity >= 0.0) || !finite_float(light.intensity)) {
         return fail(what + ": intensity " + std::to_string(light.intensity) +
                     " is not a finite number >= 0");
       }

@@ -1,7 +1,12 @@
 // Internal: vertex-attribute generation and validation (see mesh_utils.hpp).
+//
+// Face normals and tangent frames are computed in double precision: products of differences of
+// float positions overflow a float as soon as coordinates reach about 1e19, while in double they
+// are exact enough for any finite float input, so even absurd (but finite) files get unit normals.
 #include "mesh_utils.hpp"
 
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +20,9 @@ bool finite(glm::vec2 v) {
 bool finite(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+bool finite(glm::dvec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 bool finite(glm::vec4 v) {
   return finite(glm::vec3(v)) && std::isfinite(v.w);
 }
@@ -25,30 +33,51 @@ bool triangle_in_range(const std::vector<std::uint32_t>& indices, std::size_t fi
          indices[first + 2] < vertex_count;
 }
 
-glm::vec3 normalized_or(glm::vec3 v, glm::vec3 fallback) {
-  return safe_normalize(v).value_or(fallback);
+// Unit direction of a double vector, scaled first so that squaring cannot overflow.
+std::optional<glm::dvec3> safe_normalize(glm::dvec3 v) {
+  if (!finite(v)) {
+    return std::nullopt;
+  }
+  const double m = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+  if (!(m > 0.0)) {
+    return std::nullopt;
+  }
+  const glm::dvec3 w = v / m;
+  return w / std::sqrt(glm::dot(w, w));
+}
+
+glm::vec3 normalized_or(glm::dvec3 v, glm::vec3 fallback) {
+  const std::optional<glm::dvec3> n = safe_normalize(v);
+  return n ? glm::vec3(*n) : fallback;
+}
+
+glm::dvec3 position(const std::vector<Vertex>& vertices, std::uint32_t i) {
+  return glm::dvec3(vertices[i].position);
+}
+
+// Twice the area times the unit normal of triangle (a, b, c), counter-clockwise = front.
+glm::dvec3 face_vector(const std::vector<Vertex>& v, std::uint32_t a, std::uint32_t b,
+                       std::uint32_t c) {
+  return glm::cross(position(v, b) - position(v, a), position(v, c) - position(v, a));
 }
 
 } // namespace
 
 std::optional<glm::vec3> safe_normalize(glm::vec3 v) {
-  // Divide by the largest component first: squaring components of 1e20 (or 1e-25) would
-  // overflow (underflow) a float, although the direction is perfectly defined.
-  const float m = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
-  if (!(m > 0.0f) || !std::isfinite(m)) {
+  const std::optional<glm::dvec3> n = safe_normalize(glm::dvec3(v));
+  if (!n) {
     return std::nullopt;
   }
-  const glm::vec3 w = v / m;
-  return w / std::sqrt(glm::dot(w, w));
+  return glm::vec3(*n);
 }
 
 glm::vec3 any_perpendicular(glm::vec3 n) {
   // Cross with the coordinate axis least aligned with n, so the result is never near zero.
   const glm::vec3 a = glm::abs(n);
-  const glm::vec3 axis = (a.x <= a.y && a.x <= a.z) ? glm::vec3(1, 0, 0)
-                         : (a.y <= a.z)             ? glm::vec3(0, 1, 0)
-                                                    : glm::vec3(0, 0, 1);
-  return normalized_or(glm::cross(n, axis), glm::vec3(1, 0, 0));
+  const glm::dvec3 axis = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
+                          : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
+                                                     : glm::dvec3(0, 0, 1);
+  return normalized_or(glm::cross(glm::dvec3(n), axis), glm::vec3(1, 0, 0));
 }
 
 void generate_flat_or_smooth_normals(std::vector<Vertex>& vertices,
@@ -62,13 +91,10 @@ void generate_flat_or_smooth_normals(std::vector<Vertex>& vertices,
       if (!triangle_in_range(indices, 3 * t, vertices.size())) {
         continue;
       }
-      const Vertex& a = vertices[indices[3 * t]];
-      const Vertex& b = vertices[indices[3 * t + 1]];
-      const Vertex& c = vertices[indices[3 * t + 2]];
-      const glm::vec3 n =
-          normalized_or(glm::cross(b.position - a.position, c.position - a.position), up);
-      for (const Vertex* v : {&a, &b, &c}) {
-        flat.push_back(*v);
+      const std::uint32_t* tri = &indices[3 * t];
+      const glm::vec3 n = normalized_or(face_vector(vertices, tri[0], tri[1], tri[2]), up);
+      for (int k = 0; k < 3; ++k) {
+        flat.push_back(vertices[tri[k]]);
         flat.back().normal = n;
       }
     }
@@ -80,22 +106,18 @@ void generate_flat_or_smooth_normals(std::vector<Vertex>& vertices,
     return;
   }
 
-  std::vector<glm::vec3> sum(vertices.size(), glm::vec3(0.0f));
+  std::vector<glm::dvec3> sum(vertices.size(), glm::dvec3(0.0));
   for (std::size_t t = 0; t < triangle_count; ++t) {
     if (!triangle_in_range(indices, 3 * t, vertices.size())) {
       continue;
     }
-    const std::uint32_t i0 = indices[3 * t], i1 = indices[3 * t + 1], i2 = indices[3 * t + 2];
+    const std::uint32_t* tri = &indices[3 * t];
     // The unnormalised cross product's length is twice the triangle's area: summing it weights
     // every face by its area, so slivers at a seam do not skew the result.
-    const glm::vec3 face = glm::cross(vertices[i1].position - vertices[i0].position,
-                                      vertices[i2].position - vertices[i0].position);
-    if (!finite(face)) {
-      continue;
+    const glm::dvec3 face = face_vector(vertices, tri[0], tri[1], tri[2]);
+    for (int k = 0; k < 3; ++k) {
+      sum[tri[k]] += face;
     }
-    sum[i0] += face;
-    sum[i1] += face;
-    sum[i2] += face;
   }
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i].normal = normalized_or(sum[i], up);
@@ -103,28 +125,28 @@ void generate_flat_or_smooth_normals(std::vector<Vertex>& vertices,
 }
 
 void generate_tangents(std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices) {
-  std::vector<glm::vec3> tan_sum(vertices.size(), glm::vec3(0.0f));
-  std::vector<glm::vec3> up_sum(vertices.size(), glm::vec3(0.0f)); // direction of decreasing v
+  std::vector<glm::dvec3> tan_sum(vertices.size(), glm::dvec3(0.0));
+  std::vector<glm::dvec3> up_sum(vertices.size(), glm::dvec3(0.0)); // direction of decreasing v
   const std::size_t triangle_count = indices.size() / 3;
   for (std::size_t t = 0; t < triangle_count; ++t) {
     if (!triangle_in_range(indices, 3 * t, vertices.size())) {
       continue;
     }
     const std::uint32_t i0 = indices[3 * t], i1 = indices[3 * t + 1], i2 = indices[3 * t + 2];
-    const glm::vec3 e1 = vertices[i1].position - vertices[i0].position;
-    const glm::vec3 e2 = vertices[i2].position - vertices[i0].position;
-    const glm::vec2 d1 = vertices[i1].uv - vertices[i0].uv;
-    const glm::vec2 d2 = vertices[i2].uv - vertices[i0].uv;
-    const float det = d1.x * d2.y - d2.x * d1.y;
-    if (!std::isfinite(det) || std::abs(det) < 1e-20f) {
+    const glm::dvec3 e1 = position(vertices, i1) - position(vertices, i0);
+    const glm::dvec3 e2 = position(vertices, i2) - position(vertices, i0);
+    const glm::dvec2 d1 = glm::dvec2(vertices[i1].uv) - glm::dvec2(vertices[i0].uv);
+    const glm::dvec2 d2 = glm::dvec2(vertices[i2].uv) - glm::dvec2(vertices[i0].uv);
+    const double det = d1.x * d2.y - d2.x * d1.y;
+    if (!std::isfinite(det) || det == 0.0) {
       continue; // Degenerate UVs: this triangle says nothing about the tangent frame.
     }
     // Solve [e1 e2] = [T B] [d1 d2] for T = dP/du and B = dP/dv (Lengyel). Each triangle's
     // contribution is scaled by |det| (its UV area) relative to the plain solution, so small UV
     // islands at seams do not dominate.
-    const float sign = det > 0.0f ? 1.0f : -1.0f;
-    const glm::vec3 dp_du = (e1 * d2.y - e2 * d1.y) * sign;
-    const glm::vec3 dp_dv = (e2 * d1.x - e1 * d2.x) * sign;
+    const double sign = det > 0.0 ? 1.0 : -1.0;
+    const glm::dvec3 dp_du = (e1 * d2.y - e2 * d1.y) * sign;
+    const glm::dvec3 dp_dv = (e2 * d1.x - e1 * d2.x) * sign;
     if (!finite(dp_du) || !finite(dp_dv)) {
       continue;
     }
@@ -135,20 +157,20 @@ void generate_tangents(std::vector<Vertex>& vertices, const std::vector<std::uin
   }
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     Vertex& v = vertices[i];
-    const glm::vec3 n = normalized_or(v.normal, glm::vec3(0, 1, 0));
-    // Gram-Schmidt: remove the normal component so that the frame is orthonormal.
-    const std::optional<glm::vec3> sum_dir = safe_normalize(tan_sum[i]);
-    // Work on the unit direction (the sums may be huge or tiny), and fall back when it is (nearly)
-    // parallel to the normal: what remains after removing the normal part would be rounding noise.
-    const glm::vec3 t = sum_dir ? *sum_dir - n * glm::dot(n, *sum_dir) : glm::vec3(0.0f);
-    const std::optional<glm::vec3> t_dir = safe_normalize(t);
-    if (!t_dir || glm::dot(t, t) < 1e-8f) {
-      v.tangent = glm::vec4(any_perpendicular(n), 1.0f);
+    const glm::dvec3 n = safe_normalize(glm::dvec3(v.normal)).value_or(glm::dvec3(0, 1, 0));
+    const glm::vec3 fallback = any_perpendicular(glm::vec3(n));
+    // Gram-Schmidt on the unit direction (the sums may be huge or tiny), with a fallback when it
+    // is (nearly) parallel to the normal: what remains after removing the normal part would be
+    // rounding noise.
+    const std::optional<glm::dvec3> sum_dir = safe_normalize(tan_sum[i]);
+    const glm::dvec3 t = sum_dir ? *sum_dir - n * glm::dot(n, *sum_dir) : glm::dvec3(0.0);
+    const std::optional<glm::dvec3> t_dir = safe_normalize(t);
+    if (!t_dir || glm::dot(t, t) < 1e-8) {
+      v.tangent = glm::vec4(fallback, 1.0f);
       continue;
     }
-    const glm::vec3 tn = *t_dir;
-    const float handedness = glm::dot(glm::cross(n, tn), up_sum[i]) < 0.0f ? -1.0f : 1.0f;
-    v.tangent = glm::vec4(tn, handedness);
+    const double handedness = glm::dot(glm::cross(n, *t_dir), up_sum[i]);
+    v.tangent = glm::vec4(glm::vec3(*t_dir), handedness < 0.0 ? -1.0f : 1.0f);
   }
 }
 

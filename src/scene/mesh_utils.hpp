@@ -38,8 +38,8 @@ void generate_flat_or_smooth_normals(std::vector<Vertex>& vertices,
 /// gets an arbitrary unit tangent perpendicular to its normal and w = +1 (any_perpendicular).
 void generate_tangents(std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices);
 
-/// `v` scaled to unit length, or nullopt when it has no direction (zero, NaN or infinite
-/// components). Overflow-safe: components up to FLT_MAX normalise correctly.
+/// `v` scaled to unit length, or nullopt when it has no direction (all zero, or any NaN or
+/// infinite component). Overflow-safe: components up to FLT_MAX normalise correctly.
 [[nodiscard]] std::optional<glm::vec3> safe_normalize(glm::vec3 v);
 
 /// A unit vector perpendicular to the unit vector `n` (stable for every direction).

@@ -82,7 +82,8 @@ void compare_with_golden(const Image& actual, const std::string& name) {
   const std::filesystem::path ref_path = std::filesystem::path(SNELL_GOLDEN_DIR) / (name + ".png");
   std::filesystem::create_directories(SNELL_GOLDEN_OUTPUT_DIR);
   const std::filesystem::path out_dir(SNELL_GOLDEN_OUTPUT_DIR);
-  if (const char* update = std::getenv("SNELL_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+  if (const char* update = std::getenv("SNELL_UPDATE_GOLDEN");
+      update && std::string(update) == "1") {
     REQUIRE(write_png(ref_path, actual));
     MESSAGE("updated " << ref_path.string() << ": look at it before committing");
     return;
@@ -121,7 +122,9 @@ void compare_with_golden(const Image& actual, const std::string& name) {
   CHECK(ok);
 }
 
-bool is_sky_like(glm::vec3 c) { return c.b > c.r && c.b > 0.5f; }
+bool is_sky_like(glm::vec3 c) {
+  return c.b > c.r && c.b > 0.5f;
+}
 
 } // namespace
 

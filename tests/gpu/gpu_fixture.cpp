@@ -99,8 +99,8 @@ Scene empty_dark_scene() {
 
 Image render_view(Context& ctx, SceneRenderer& renderer, const SceneView& view_in,
                   std::uint32_t width, std::uint32_t height) {
-  auto target = RenderTarget::create(ctx, RenderTargetDesc{width, height, ColorFormat::rgba8_unorm,
-                                                           true, false, "test target"});
+  auto target = RenderTarget::create(
+      ctx, RenderTargetDesc{width, height, ColorFormat::rgba8_unorm, true, false, "test target"});
   REQUIRE_MESSAGE(target.has_value(), target.error().message);
   SceneView view = view_in;
   view.extent = {width, height};

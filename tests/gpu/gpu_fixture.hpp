@@ -45,8 +45,8 @@ int add_object(Scene& scene, const Mesh& mesh, glm::vec3 position,
 Scene empty_dark_scene();
 
 /// Renders `scene` for `view` into a new WxH rgba8_unorm target and reads it back.
-Image render_view(Context& ctx, SceneRenderer& renderer, const SceneView& view,
-                  std::uint32_t width, std::uint32_t height);
+Image render_view(Context& ctx, SceneRenderer& renderer, const SceneView& view, std::uint32_t width,
+                  std::uint32_t height);
 
 /// Centroid (x, y in pixels, y = row from the top) of the pixels within `tolerance` (per
 /// channel, 0..255) of `rgb`, and their count.

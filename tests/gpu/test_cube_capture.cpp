@@ -15,12 +15,13 @@ Scene marker_scene(glm::vec3 center, glm::vec3 offsets[6]) {
   for (int f = 0; f < 6; ++f) {
     const glm::vec3 axis = cube_face_forward(static_cast<CubeFace>(f));
     // Off the face centre on purpose, so a mirrored or rotated face would misplace it.
-    const glm::vec3 side = glm::vec3(axis.y != 0 ? 0.9f : 0.0f, axis.y == 0 ? 0.7f : 0.0f,
-                                     axis.x != 0 ? -0.8f : 0.6f);
+    const glm::vec3 side =
+        glm::vec3(axis.y != 0 ? 0.9f : 0.0f, axis.y == 0 ? 0.7f : 0.0f, axis.x != 0 ? -0.8f : 0.6f);
     offsets[f] = 3.0f * axis + side;
-    test::add_object(scene, test::make_box_mesh(glm::vec3(0.12f),
-                                                test::add_emissive_material(scene, kColors[f])),
-                     center + offsets[f]);
+    test::add_object(
+        scene,
+        test::make_box_mesh(glm::vec3(0.12f), test::add_emissive_material(scene, kColors[f])),
+        center + offsets[f]);
   }
   return scene;
 }

@@ -51,11 +51,12 @@ TEST_CASE("GLSL math mirrors agree with the C++ functions") {
   Context& ctx = gpu.ctx();
   const std::vector<Input> inputs = make_inputs();
   const auto n = static_cast<std::uint32_t>(inputs.size());
-  auto in_buf = Buffer::create(ctx, BufferDesc{n * sizeof(Input), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                               MemoryUsage::upload, "inputs"});
-  auto out_buf = Buffer::create(ctx, BufferDesc{n * sizeof(Output),
-                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                                MemoryUsage::readback, "outputs"});
+  auto in_buf =
+      Buffer::create(ctx, BufferDesc{n * sizeof(Input), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     MemoryUsage::upload, "inputs"});
+  auto out_buf =
+      Buffer::create(ctx, BufferDesc{n * sizeof(Output), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     MemoryUsage::readback, "outputs"});
   REQUIRE(in_buf.has_value());
   REQUIRE(out_buf.has_value());
   REQUIRE(in_buf->upload(inputs.data(), n * sizeof(Input)));
@@ -165,7 +166,8 @@ TEST_CASE("GLSL math mirrors agree with the C++ functions") {
     CHECK(std::fabs(o.fresnel.z - f0_from_ior(1.0f, 1.0f / eta)) < tol);
     const Plane plane = plane_from_vec4(v.plane);
     CHECK(std::fabs(o.fresnel.w - signed_distance(plane, glm::vec3(v.point))) < 10 * tol);
-    CHECK(glm::length(glm::vec3(o.reflected) - reflect_point(plane, glm::vec3(v.point))) < 10 * tol);
+    CHECK(glm::length(glm::vec3(o.reflected) - reflect_point(plane, glm::vec3(v.point))) <
+          10 * tol);
     CHECK(glm::length(glm::vec3(o.reflected_dir) -
                       reflect_direction(plane, glm::vec3(v.incident))) < tol);
     const glm::vec2 uv_vk = project_to_uv(v.clip, ClipConvention::vulkan);

@@ -27,10 +27,13 @@ TEST_CASE("probe: a marker lands at the pixel the view-projection predicts (+-1 
   test::GpuFixture gpu;
   Scene scene = test::empty_dark_scene();
   const glm::vec3 red(1, 0, 0), green(0, 1, 0);
-  const glm::vec3 p_red(1.5f, 2.0f, -1.0f);  // up and right of the target
+  const glm::vec3 p_red(1.5f, 2.0f, -1.0f);    // up and right of the target
   const glm::vec3 p_green(-2.0f, -1.0f, 0.5f); // down and left
-  test::add_object(scene, test::make_box_mesh(glm::vec3(0.15f), test::add_emissive_material(scene, red)), p_red);
-  test::add_object(scene, test::make_box_mesh(glm::vec3(0.15f), test::add_emissive_material(scene, green)), p_green);
+  test::add_object(
+      scene, test::make_box_mesh(glm::vec3(0.15f), test::add_emissive_material(scene, red)), p_red);
+  test::add_object(scene,
+                   test::make_box_mesh(glm::vec3(0.15f), test::add_emissive_material(scene, green)),
+                   p_green);
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE_MESSAGE(renderer.has_value(), renderer.error().message);
   const SceneView view = main_view({0.5f, 1.0f, 8.0f}, {0, 0, 0});
@@ -55,8 +58,12 @@ TEST_CASE("probe: the clip plane removes the clipped side and keeps the other") 
   test::GpuFixture gpu;
   Scene scene = test::empty_dark_scene();
   const glm::vec3 above(0, 0, 1), below(1, 1, 0);
-  test::add_object(scene, test::make_box_mesh(glm::vec3(0.3f), test::add_emissive_material(scene, above)), {-1.0f, 0.5f, 0});
-  test::add_object(scene, test::make_box_mesh(glm::vec3(0.3f), test::add_emissive_material(scene, below)), {1.0f, -0.5f, 0});
+  test::add_object(scene,
+                   test::make_box_mesh(glm::vec3(0.3f), test::add_emissive_material(scene, above)),
+                   {-1.0f, 0.5f, 0});
+  test::add_object(scene,
+                   test::make_box_mesh(glm::vec3(0.3f), test::add_emissive_material(scene, below)),
+                   {1.0f, -0.5f, 0});
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE(renderer.has_value());
   SceneView view = main_view({0, 0.5f, 6.0f}, {0, 0, 0});
@@ -79,7 +86,9 @@ TEST_CASE("probe: a mirrored view shows the mirror image with correct winding") 
   Scene scene = test::empty_dark_scene();
   // A box whose bottom face is red and top face is green (two single-sided quads).
   const glm::vec3 green(0, 1, 0), red(1, 0, 0), marker(0, 0, 1);
-  const int top = test::add_object(scene, test::make_quad_mesh({0.5f, 0.5f}, test::add_emissive_material(scene, green)), {0, 1.5f, 0});
+  const int top = test::add_object(
+      scene, test::make_quad_mesh({0.5f, 0.5f}, test::add_emissive_material(scene, green)),
+      {0, 1.5f, 0});
   Mesh bottom = test::make_quad_mesh({0.5f, 0.5f}, test::add_emissive_material(scene, red));
   for (Vertex& v : bottom.vertices) { // face down: mirror the quad through y (CCW kept)
     v.position.z = -v.position.z;
@@ -87,7 +96,9 @@ TEST_CASE("probe: a mirrored view shows the mirror image with correct winding") 
   }
   test::add_object(scene, bottom, {0, 1.0f, 0});
   const glm::vec3 p_marker(1.2f, 2.0f, 0.3f);
-  test::add_object(scene, test::make_box_mesh(glm::vec3(0.05f), test::add_emissive_material(scene, marker)), p_marker);
+  test::add_object(
+      scene, test::make_box_mesh(glm::vec3(0.05f), test::add_emissive_material(scene, marker)),
+      p_marker);
   (void)top;
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE(renderer.has_value());
@@ -113,8 +124,8 @@ TEST_CASE("probe: a mirrored view shows the mirror image with correct winding") 
   // The marker appears where reflection_matrix predicts.
   const glm::vec3 mirrored_marker = reflect_point(mirror, p_marker);
   const glm::vec2 predicted = test::predict_pixel(view.proj * view.view, mirrored_marker, kW, kH);
-  const glm::vec2 predicted_r = test::predict_pixel(
-      view.proj * view.view * reflection_matrix(mirror), p_marker, kW, kH);
+  const glm::vec2 predicted_r =
+      test::predict_pixel(view.proj * view.view * reflection_matrix(mirror), p_marker, kW, kH);
   CHECK(glm::length(predicted - predicted_r) < 1e-3f);
   const test::Blob blob = test::find_color(image, marker);
   REQUIRE(blob.count > 4);

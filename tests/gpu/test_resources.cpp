@@ -44,8 +44,8 @@ TEST_CASE("resources: buffers upload through staging and round-trip") {
   REQUIRE(gpu_buffer.has_value());
   REQUIRE(gpu_buffer->upload(data.data(), 4000));
   CHECK_FALSE(gpu_buffer->upload(data.data(), 8, 3996)); // past the end
-  auto readback = Buffer::create(gpu.ctx(), BufferDesc{4000, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                       MemoryUsage::readback});
+  auto readback = Buffer::create(
+      gpu.ctx(), BufferDesc{4000, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback});
   REQUIRE(readback.has_value());
   REQUIRE(gpu.ctx().submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{0, 0, 4000};

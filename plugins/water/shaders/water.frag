@@ -1,0 +1,86 @@
+#version 460
+// Water surface: projective reflection and refraction lookups perturbed by scrolled normal-map
+// ripples, depth-aware refraction (Beer-Lambert absorption along the view ray, soft shoreline,
+// no leaking of geometry in front of the water), Fresnel blend and the sun's specular.
+#extension GL_GOOGLE_include_directive : require
+#include "snell/optics.glsl"
+#include "snell/plane.glsl"
+#include "water_common.glsl"
+
+layout(location = 0) in vec3 in_world;
+layout(location = 0) out vec4 out_color;
+
+// World position of what the refraction pass saw at `uv`, and whether anything was there.
+vec3 underwater_point(vec2 uv, out bool hit) {
+  float d = textureLod(refraction_depth, uv, 0.0).r;
+  hit = d < 1.0;
+  vec4 p = water.refraction_inv_vp * vec4(uv * 2.0 - 1.0, d, 1.0);
+  return p.xyz / p.w;
+}
+
+void main() {
+  vec3 p = in_world;
+  float height = -water.plane.w;
+  vec2 uv = gl_FragCoord.xy * water.extent.zw; // == project_to_uv(view_proj * p, vulkan)
+
+  // Two normal-map layers scrolled along the wind at different scales hide the tiling.
+  vec2 base = p.xz * water.wave.x;
+  vec3 n1 = texture(normal_map, base + water.wind.xy * water.wave.x * water.wave.w).xyz * 2.0 - 1.0;
+  vec3 n2 = texture(normal_map, base * 0.43 + vec2(0.37, 0.11) + water.wind.zw * water.wave.x * water.wave.w).xyz * 2.0 - 1.0;
+  vec2 slope = (n1.xy + n2.xy) * water.wave.y;
+  // Tangent space: x = +x world, y (green, toward the image top = decreasing v) = -z world.
+  vec3 n = normalize(vec3(slope.x, 1.0, -slope.y));
+  vec2 offset = slope * water.wave.z;
+
+  vec3 reflection = texture(reflection_tex, uv + offset).rgb;
+
+  // Refraction: a distorted sample that lands on something in front of the water (nearer the
+  // eye than this surface point) falls back to the undistorted one.
+  float surface_distance = distance(water.eye.xyz, p);
+  vec2 uv_r = uv + offset;
+  bool hit;
+  vec3 q = underwater_point(uv_r, hit);
+  if (hit && (distance(water.eye.xyz, q) < surface_distance || q.y > height)) {
+    uv_r = uv;
+    q = underwater_point(uv_r, hit);
+  }
+  vec3 refraction = texture(refraction_tex, uv_r).rgb;
+  float thickness = hit ? distance(p, q) : 1e4;
+  vec3 transmittance = exp(-water.absorption.rgb * thickness);
+  vec3 refracted = refraction * transmittance + water.water_color.rgb * (1.0 - transmittance);
+
+  // Soft shoreline: fade in over the first shore_softness metres of water depth.
+  bool hit0;
+  vec3 q0 = underwater_point(uv, hit0);
+  float depth_below = hit0 ? max(height - q0.y, 0.0) : 1e4;
+  float alpha = water.absorption.a > 0.0 ? smoothstep(0.0, water.absorption.a, depth_below) : 1.0;
+
+  vec3 v = normalize(water.eye.xyz - p);
+  float cos_v = max(dot(n, v), 0.0);
+  int mode = int(water.fresnel.x + 0.5);
+  float f;
+  if (mode == 0) {
+    f = fresnel_dielectric(cos_v, water.fresnel.y);
+  } else if (mode == 1) {
+    f = fresnel_schlick(cos_v, water.fresnel.z);
+  } else {
+    f = 1.0 - cos_v; // seed 001: lerp(reflection, refraction, dot(eye, normal))
+  }
+  vec3 color = mix(refracted, reflection, f);
+  color = mix(color, water.water_color.rgb, water.water_color.a);
+  vec3 r = reflect(normalize(water.light_dir.xyz), n);
+  float spec = pow(max(dot(r, v), 0.0), water.light_color.a) * water.light_dir.w;
+  color += water.light_color.rgb * spec;
+
+  int view = int(water.fresnel.w + 0.5);
+  if (view == 1) {
+    color = reflection;
+  } else if (view == 2) {
+    color = refraction;
+  } else if (view == 3) {
+    color = n * 0.5 + 0.5;
+  } else if (view == 4) {
+    color = vec3(f);
+  }
+  out_color = vec4(color, view == 0 ? alpha : 1.0);
+}

@@ -1,0 +1,185 @@
+#include "session.hpp"
+
+#include <snell/builtin_scenes.hpp>
+
+#include <glm/trigonometric.hpp>
+
+#include <filesystem>
+
+namespace snell::cli {
+namespace {
+
+Result<Scene> load_scene(const std::string& name) {
+  const std::filesystem::path path(name);
+  const std::string ext = path.extension().string();
+  if (ext == ".gltf" || ext == ".glb") {
+    return load_gltf(path);
+  }
+  return make_builtin_scene(name);
+}
+
+/// The camera: the scene's first camera, else one framing the scene's bounds; then overrides.
+CameraDesc choose_camera(const Scene& scene, const RenderOptions& o) {
+  CameraDesc cam;
+  if (!scene.cameras.empty()) {
+    cam = scene.cameras.front();
+  } else {
+    const auto [lo, hi] = scene.bounds();
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float radius = std::max(0.5f * glm::length(hi - lo), 0.1f);
+    cam.target = centre;
+    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.45f, 1.0f)) * radius * 2.4f;
+    cam.z_near = radius * 0.01f;
+    cam.z_far = radius * 20.0f;
+  }
+  if (o.eye) {
+    cam.eye = *o.eye;
+  }
+  if (o.target) {
+    cam.target = *o.target;
+  }
+  if (o.fov_degrees) {
+    cam.yfov = glm::radians(*o.fov_degrees);
+  }
+  if (o.z_near) {
+    cam.z_near = *o.z_near;
+  }
+  if (o.z_far) {
+    cam.z_far = *o.z_far;
+  }
+  return cam;
+}
+
+} // namespace
+
+Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_code) {
+  auto s = std::make_unique<Session>();
+  exit_code = 2;
+  if (auto r = register_builtin_effects(s->registry); !r) {
+    exit_code = 1;
+    return r.error();
+  }
+  // Arguments first (no GPU work): effect names and every --set against the schemas.
+  std::vector<std::pair<std::string, std::vector<std::pair<std::string, ParamValue>>>> plan;
+  for (const std::string& name : o.effects) {
+    const ParamSchema* schema = s->registry.schema(name);
+    if (schema == nullptr) {
+      std::string known;
+      for (const std::string& n : s->registry.names()) {
+        if (!known.empty()) {
+          known += ", ";
+        }
+        known += n;
+      }
+      return fail(ErrorCode::unknown_name,
+                  "--effect: unknown effect '" + name + "'; registered effects: " + known);
+    }
+    plan.push_back({name, {}});
+    for (const auto& set : o.sets) {
+      if (set[0] != name) {
+        continue;
+      }
+      const ParamSpec* spec = schema->find(set[1]);
+      if (spec == nullptr) {
+        return fail(ErrorCode::unknown_name,
+                    "--set " + name + "." + set[1] +
+                        ": unknown parameter; valid: " + schema->key_list());
+      }
+      auto value = parse_param(*schema, *spec, set[2]);
+      if (!value) {
+        return fail(ErrorCode::invalid_argument, "--set: " + value.error().message);
+      }
+      plan.back().second.push_back({set[1], *value});
+    }
+  }
+  auto scene = load_scene(o.scene);
+  if (!scene) {
+    exit_code = scene.error().code == ErrorCode::unknown_name ? 2 : 1;
+    return scene.error();
+  }
+  s->scene = std::move(*scene);
+  exit_code = 1;
+  ContextDesc cd;
+  cd.validation = o.validation;
+  cd.device = o.device;
+  auto ctx = Context::create(cd);
+  if (!ctx) {
+    return ctx.error();
+  }
+  s->ctx.emplace(std::move(*ctx));
+  auto renderer = SceneRenderer::create(*s->ctx, s->scene);
+  if (!renderer) {
+    return renderer.error();
+  }
+  s->renderer.emplace(std::move(*renderer));
+  auto frame = FrameRenderer::create(
+      *s->ctx, FrameDesc{o.width, o.height, ColorFormat::rgba8_srgb, o.debug_targets});
+  if (!frame) {
+    return frame.error();
+  }
+  s->frame.emplace(std::move(*frame));
+  EffectCreateInfo info;
+  info.context = &*s->ctx;
+  info.color_format = s->frame->target().vk_color_format();
+  info.depth_format = VK_FORMAT_D32_SFLOAT;
+  info.scene = &s->scene;
+  for (const auto& [name, values] : plan) {
+    auto effect = s->registry.create(name, info);
+    if (!effect) {
+      return effect.error();
+    }
+    for (const auto& [key, value] : values) {
+      if (auto r = (*effect)->set_param(key, value); !r) {
+        exit_code = 2;
+        return r.error();
+      }
+    }
+    s->effects.push_back(std::move(*effect));
+  }
+  s->camera = choose_camera(s->scene, o);
+  return s;
+}
+
+Result<FrameStats> Session::render(float time, bool with_effects) {
+  if (!with_effects || effects.empty()) {
+    return frame->render(*renderer, camera, time);
+  }
+  FrameInfo info;
+  info.time = time;
+  info.light = scene.light;
+  FrameHooks hooks;
+  hooks.offscreen = [&](VkCommandBuffer cmd, GpuTimer& timer, const SceneView& view) {
+    info.main_view = view;
+    info.timer = &timer;
+    for (auto& e : effects) {
+      e->update(info);
+      e->record_passes(cmd, *renderer);
+    }
+  };
+  hooks.in_main = [&](VkCommandBuffer cmd, const SceneView& /*view*/) {
+    for (auto& e : effects) {
+      e->record_draw(cmd, info);
+    }
+  };
+  hooks.debug_targets = [&] {
+    std::vector<DebugTarget> out;
+    for (auto& e : effects) {
+      for (const DebugTarget& t : e->debug_targets()) {
+        out.push_back(t);
+      }
+    }
+    return out;
+  };
+  auto stats = frame->render(*renderer, camera, time, hooks);
+  if (!stats) {
+    return stats;
+  }
+  for (auto& e : effects) {
+    if (const Error* err = e->error()) {
+      return *err;
+    }
+  }
+  return stats;
+}
+
+} // namespace snell::cli
