@@ -31,6 +31,7 @@ struct DebugTarget {
   VkImage image = VK_NULL_HANDLE;    ///< The image itself (for readback in tests), if any.
   std::uint32_t width = 0;           ///< Size of level 0 in pixels.
   std::uint32_t height = 0;
+  VkFormat format = VK_FORMAT_UNDEFINED; ///< Format of `image` (for readback).
 };
 
 /// Types a parameter can have.

@@ -59,6 +59,12 @@ public:
   /// Renders one frame of `source` seen by `camera` at `time` seconds and waits for it.
   [[nodiscard]] Result<FrameStats> render(SceneSource& source, const CameraDesc& camera, float time,
                                           const FrameHooks& hooks = {});
+  /// Renders one frame with effects: each effect's update() and record_passes() (offscreen,
+  /// drawing `source`), the main pass (scene, then each effect's record_draw()), and the
+  /// effects' debug targets as thumbnails when enabled. The first effect error is returned.
+  [[nodiscard]] Result<FrameStats> render(SceneSource& source, const CameraDesc& camera, float time,
+                                          std::span<Effect* const> effects,
+                                          const DirectionalLight& light);
   /// The output after render().
   [[nodiscard]] const RenderTarget& target() const;
   /// Reads the output back (RGBA8, sRGB-encoded for the default format).

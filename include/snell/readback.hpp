@@ -1,6 +1,7 @@
 // Snell runtime: reading targets back to the CPU, and writing PNG files.
 #pragma once
 
+#include <snell/effect.hpp>
 #include <snell/images.hpp>
 #include <snell/scene.hpp>
 
@@ -38,6 +39,11 @@ Result<Image> read_rgba8(const Context::Impl& ctx, const RenderTarget& target, s
 Result<FloatImage> read_float(const Context::Impl& ctx, const RenderTarget& target,
                               std::uint32_t level);
 } // namespace detail
+
+/// Reads an effect's debug target (level 0) as floats: colour formats RGBA8 UNORM/SRGB (sRGB
+/// decoded to linear) and RGBA16F, or D32 depth (in the red channel). The effect's passes must
+/// have completed. Errors: unsupported for other formats.
+[[nodiscard]] Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& target);
 
 /// Tone-maps linear HDR values to sRGB-encoded RGBA8: `exposure` multiplies, then the
 /// Reinhard-Jodie curve, then the sRGB transfer function. Alpha is clamped to [0,1].

@@ -138,11 +138,11 @@ public:
       write_descriptors();
       debug_ = {
           DebugTarget{"water.reflection", reflection_.color_view(), false,
-                      reflection_.color_image(), w, h},
+                      reflection_.color_image(), w, h, reflection_.vk_color_format()},
           DebugTarget{"water.refraction", refraction_.color_view(), false,
-                      refraction_.color_image(), w, h},
+                      refraction_.color_image(), w, h, refraction_.vk_color_format()},
           DebugTarget{"water.refraction_depth", refraction_.depth_view(), true,
-                      refraction_.depth_image(), w, h},
+                      refraction_.depth_image(), w, h, VK_FORMAT_D32_SFLOAT},
       };
     }
     error_.reset();

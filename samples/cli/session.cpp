@@ -144,42 +144,11 @@ Result<FrameStats> Session::render(float time, bool with_effects) {
   if (!with_effects || effects.empty()) {
     return frame->render(*renderer, camera, time);
   }
-  FrameInfo info;
-  info.time = time;
-  info.light = scene.light;
-  FrameHooks hooks;
-  hooks.offscreen = [&](VkCommandBuffer cmd, GpuTimer& timer, const SceneView& view) {
-    info.main_view = view;
-    info.timer = &timer;
-    for (auto& e : effects) {
-      e->update(info);
-      e->record_passes(cmd, *renderer);
-    }
-  };
-  hooks.in_main = [&](VkCommandBuffer cmd, const SceneView& /*view*/) {
-    for (auto& e : effects) {
-      e->record_draw(cmd, info);
-    }
-  };
-  hooks.debug_targets = [&] {
-    std::vector<DebugTarget> out;
-    for (auto& e : effects) {
-      for (const DebugTarget& t : e->debug_targets()) {
-        out.push_back(t);
-      }
-    }
-    return out;
-  };
-  auto stats = frame->render(*renderer, camera, time, hooks);
-  if (!stats) {
-    return stats;
-  }
+  std::vector<Effect*> list;
   for (auto& e : effects) {
-    if (const Error* err = e->error()) {
-      return *err;
-    }
+    list.push_back(e.get());
   }
-  return stats;
+  return frame->render(*renderer, camera, time, list, scene.light);
 }
 
 } // namespace snell::cli

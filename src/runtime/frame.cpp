@@ -152,6 +152,47 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
   return stats;
 }
 
+Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& camera, float time,
+                                         std::span<Effect* const> effects,
+                                         const DirectionalLight& light) {
+  FrameInfo info;
+  info.time = time;
+  info.light = light;
+  FrameHooks hooks;
+  hooks.offscreen = [&](VkCommandBuffer cmd, GpuTimer& timer, const SceneView& view) {
+    info.main_view = view;
+    info.timer = &timer;
+    for (Effect* e : effects) {
+      e->update(info);
+      e->record_passes(cmd, source);
+    }
+  };
+  hooks.in_main = [&](VkCommandBuffer cmd, const SceneView& /*view*/) {
+    for (Effect* e : effects) {
+      e->record_draw(cmd, info);
+    }
+  };
+  hooks.debug_targets = [&] {
+    std::vector<DebugTarget> out;
+    for (Effect* e : effects) {
+      for (const DebugTarget& t : e->debug_targets()) {
+        out.push_back(t);
+      }
+    }
+    return out;
+  };
+  auto stats = render(source, camera, time, hooks);
+  if (!stats) {
+    return stats;
+  }
+  for (Effect* e : effects) {
+    if (const Error* err = e->error()) {
+      return *err;
+    }
+  }
+  return stats;
+}
+
 const RenderTarget& FrameRenderer::target() const {
   return impl_->target;
 }

@@ -191,6 +191,47 @@ Result<std::vector<float>> read_depth(const Context& ctx, const RenderTarget& ta
   return out;
 }
 
+Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& target) {
+  if (target.image == VK_NULL_HANDLE || target.width == 0 || target.height == 0) {
+    return fail(ErrorCode::invalid_argument,
+                "read_debug_target: '" + target.name + "' has no image to read");
+  }
+  ColorFormat format = ColorFormat::rgba8_unorm;
+  switch (target.format) {
+  case VK_FORMAT_R8G8B8A8_UNORM:
+    break;
+  case VK_FORMAT_R8G8B8A8_SRGB:
+    format = ColorFormat::rgba8_srgb;
+    break;
+  case VK_FORMAT_R16G16B16A16_SFLOAT:
+    format = ColorFormat::rgba16_float;
+    break;
+  case VK_FORMAT_D32_SFLOAT: {
+    auto bytes = read_subresource(*ctx.impl(), target.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                                  target.width, target.height, 0, 0, 4);
+    if (!bytes) {
+      return bytes.error();
+    }
+    FloatImage out{target.width, target.height,
+                   std::vector<float>(std::size_t{target.width} * target.height * 4, 1.0f)};
+    for (std::size_t i = 0; i < std::size_t{target.width} * target.height; ++i) {
+      std::memcpy(&out.rgba[i * 4], bytes->data() + i * 4, 4);
+    }
+    return out;
+  }
+  default:
+    return fail(ErrorCode::unsupported, "read_debug_target: '" + target.name +
+                                            "' has a format Snell cannot read back (" +
+                                            std::to_string(static_cast<int>(target.format)) + ")");
+  }
+  auto bytes = read_subresource(*ctx.impl(), target.image, VK_IMAGE_ASPECT_COLOR_BIT, target.width,
+                                target.height, 0, 0, format == ColorFormat::rgba16_float ? 8 : 4);
+  if (!bytes) {
+    return bytes.error();
+  }
+  return to_float(*bytes, format, target.width, target.height);
+}
+
 Image tonemap(const FloatImage& image, float exposure) {
   Image out;
   out.name = "tonemapped";

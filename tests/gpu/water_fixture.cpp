@@ -1,0 +1,51 @@
+#include "water_fixture.hpp"
+
+#include <snell/math.hpp>
+
+namespace snell::test {
+
+Scene water_test_scene() {
+  Scene s = empty_dark_scene();
+  s.anchors.push_back(Anchor{"water", {0.0f, 0.0f, 0.0f}, {20.0f, 0.0f, 20.0f}, -1});
+  Material floor;
+  floor.name = "floor";
+  floor.base_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  floor.emissive = glm::vec3(0.2f);
+  floor.specular = 0.0f;
+  s.materials.push_back(floor);
+  Mesh quad = make_quad_mesh({10.0f, 10.0f}, static_cast<int>(s.materials.size()) - 1);
+  add_object(s, quad, {0.0f, -2.0f, 0.0f});
+  return s;
+}
+
+void WaterRig::init(Context& ctx) {
+  auto r = SceneRenderer::create(ctx, scene);
+  REQUIRE_MESSAGE(r.has_value(), r.error().message);
+  renderer.emplace(std::move(*r));
+  auto f = FrameRenderer::create(ctx, FrameDesc{width, height, ColorFormat::rgba8_unorm, false});
+  REQUIRE(f.has_value());
+  frame.emplace(std::move(*f));
+  EffectCreateInfo info;
+  info.context = &ctx;
+  info.color_format = frame->target().vk_color_format();
+  info.scene = &scene;
+  auto w = create_water(info);
+  REQUIRE_MESSAGE(w.has_value(), w.error().message);
+  water = std::move(*w);
+}
+
+Image WaterRig::render(float time, bool with_water) {
+  Effect* effects[] = {water.get()};
+  auto stats = with_water ? frame->render(*renderer, camera, time, effects, scene.light)
+                          : frame->render(*renderer, camera, time);
+  REQUIRE_MESSAGE(stats.has_value(), stats.error().message);
+  auto image = frame->read_color();
+  REQUIRE(image.has_value());
+  return *image;
+}
+
+SceneView WaterRig::main_view() const {
+  return make_main_view(camera, width, height);
+}
+
+} // namespace snell::test

@@ -1,0 +1,32 @@
+// Helpers for the water tests: a test scene with a floor below the water, markers, and
+// rendering frames with or without the water effect.
+#pragma once
+
+#include "gpu_fixture.hpp"
+
+#include <snell/frame.hpp>
+#include <snell/water.hpp>
+
+namespace snell::test {
+
+/// Everything one water test renders with.
+struct WaterRig {
+  Scene scene;
+  std::optional<SceneRenderer> renderer;
+  std::optional<FrameRenderer> frame;
+  std::unique_ptr<WaterEffect> water;
+  CameraDesc camera;
+  std::uint32_t width = 256, height = 192;
+
+  /// Builds the renderer, a frame of width x height and the water effect from the scene.
+  void init(Context& ctx);
+  /// One frame (with the water when `with_water`), read back as RGBA8.
+  Image render(float time, bool with_water = true);
+  /// The main view the frame uses.
+  [[nodiscard]] SceneView main_view() const;
+};
+
+/// A dark scene: water at y = 0 over 20 x 20 m, a grey floor at y = -2, sky black.
+Scene water_test_scene();
+
+} // namespace snell::test
