@@ -42,6 +42,37 @@ foreach(case
   endif()
 endforeach()
 expect_exit(2 frobnicate)
+# Effect arguments: unknown effect, unknown key (lists the valid keys), bad value (names the
+# range), --set for an effect that is not enabled.
+expect_exit(2 render --effect lava --out x.png)
+string(FIND "${last_err}" "water" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "unknown effect: registered effects not listed:\n${last_err}")
+endif()
+expect_exit(2 render --effect water --set water.wave_hieght=1 --out x.png)
+string(FIND "${last_err}" "wave_height" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "unknown key: valid keys not listed:\n${last_err}")
+endif()
+expect_exit(2 render --effect water --set water.ior=9 --out x.png)
+string(FIND "${last_err}" "[1, 3]" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "out-of-range value: range not named:\n${last_err}")
+endif()
+expect_exit(2 render --set water.ior=1.2 --out x.png)
+expect_exit(2 render --effect water --set water.center=1 --out x.png)
+
+# snell list prints every parameter of every effect.
+expect_exit(0 list)
+foreach(key preset height center size resolution_scale clip_mode clip_offset wave_length
+        wave_height distortion wind_direction wind_force fresnel ior water_color color_blend
+        specular_power specular_intensity absorption shore_softness reflection_layers
+        refraction_layers debug_view)
+  string(FIND "${last_out}" "  ${key} " found)
+  if(found EQUAL -1)
+    message(FATAL_ERROR "snell list lacks water.${key}:\n${last_out}")
+  endif()
+endforeach()
 
 # Rendering: each built-in scene, with validation, to the requested size.
 foreach(scene pool window spheres)
@@ -63,6 +94,19 @@ expect_exit(0 render --scene "${ASSET_DIR}/courtyard.gltf" --size 160x90
 if(NOT EXISTS "${WORK_DIR}/courtyard.png")
   message(FATAL_ERROR "courtyard.gltf rendered no PNG")
 endif()
+# Water on a glTF scene, placed with --set; and the bench JSON.
+expect_exit(0 render --scene "${ASSET_DIR}/courtyard.gltf" --effect water --set water.height=0.05
+            --set water.center=0,0 --set water.size=6,6 --size 160x90
+            --out "${WORK_DIR}/courtyard_water.png" --validation)
+expect_exit(0 bench --scene pool --effect water --size 96x54 --frames 3
+            --json "${WORK_DIR}/bench.json" --validation)
+file(READ "${WORK_DIR}/bench.json" bench)
+foreach(field plain_ms effect_ms ratio passes device water.reflection water.refraction)
+  string(FIND "${bench}" "\"${field}\"" found)
+  if(found EQUAL -1)
+    message(FATAL_ERROR "bench JSON lacks '${field}':\n${bench}")
+  endif()
+endforeach()
 # A missing glTF file is an error naming it (exit 1: a failure, not a usage error).
 expect_exit(1 render --scene "${WORK_DIR}/missing.gltf" --out "${WORK_DIR}/m.png")
 string(FIND "${last_err}" "missing.gltf" found)
