@@ -47,6 +47,11 @@ struct AdoptInfo {
   VkDevice device = VK_NULL_HANDLE;                  ///< Required.
   VkQueue queue = VK_NULL_HANDLE; ///< Required: supports graphics, compute and transfer.
   std::uint32_t queue_family = 0; ///< Family index of `queue`. Default 0.
+  /// Optional: the pNext chain the host passed to vkCreateDevice (VkPhysicalDeviceFeatures2,
+  /// VkPhysicalDeviceVulkan11/13Features, ...). When given, adopt() checks that the features
+  /// Snell needs are *enabled* in it, not only supported, and names any that is not. Default
+  /// nullptr: only support is checked (Vulkan cannot query a device's enabled features).
+  const void* enabled_features = nullptr;
 };
 
 /// Owns (or borrows) the instance, device and queue that every Snell object uses.

@@ -390,6 +390,50 @@ Result<Context> Context::adopt(const AdoptInfo& info) {
                                                  std::to_string(info.queue_family) +
                                                  " does not exist or lacks graphics + compute");
   }
+  if (info.enabled_features != nullptr) {
+    // Walk the host's chain; absent structures mean "not enabled".
+    bool dynamic_rendering = false, sync2 = false, multiview = false, clip_distance = false;
+    for (auto* s = static_cast<const VkBaseInStructure*>(info.enabled_features); s != nullptr;
+         s = s->pNext) {
+      if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2) {
+        clip_distance |=
+            reinterpret_cast<const VkPhysicalDeviceFeatures2*>(s)->features.shaderClipDistance ==
+            VK_TRUE;
+      } else if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES) {
+        multiview |=
+            reinterpret_cast<const VkPhysicalDeviceVulkan11Features*>(s)->multiview == VK_TRUE;
+      } else if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES) {
+        const auto* f = reinterpret_cast<const VkPhysicalDeviceVulkan13Features*>(s);
+        dynamic_rendering |= f->dynamicRendering == VK_TRUE;
+        sync2 |= f->synchronization2 == VK_TRUE;
+      } else if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES) {
+        multiview |=
+            reinterpret_cast<const VkPhysicalDeviceMultiviewFeatures*>(s)->multiview == VK_TRUE;
+      } else if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES) {
+        dynamic_rendering |= reinterpret_cast<const VkPhysicalDeviceDynamicRenderingFeatures*>(s)
+                                 ->dynamicRendering == VK_TRUE;
+      } else if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES) {
+        sync2 |= reinterpret_cast<const VkPhysicalDeviceSynchronization2Features*>(s)
+                     ->synchronization2 == VK_TRUE;
+      }
+    }
+    std::string missing;
+    for (const auto& [ok, name] :
+         {std::pair{dynamic_rendering, "dynamicRendering"}, std::pair{sync2, "synchronization2"},
+          std::pair{multiview, "multiview"}, std::pair{clip_distance, "shaderClipDistance"}}) {
+      if (!ok) {
+        if (!missing.empty()) {
+          missing += ", ";
+        }
+        missing += name;
+      }
+    }
+    if (!missing.empty()) {
+      return fail(ErrorCode::missing_feature,
+                  "AdoptInfo: the device was created without " + missing +
+                      " enabled (enable them in the VkDeviceCreateInfo pNext chain)");
+    }
+  }
   auto impl = std::make_unique<Impl>();
   impl->owns = false;
   impl->instance = info.instance;
