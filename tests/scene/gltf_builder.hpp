@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image_write.h>
 
+#include <glm/common.hpp>
+#include <glm/gtc/type_precision.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -79,11 +81,13 @@ public:
 
   const std::filesystem::path& path() const { return path_; }
 
-  std::filesystem::path write(const std::string& name, const std::vector<std::uint8_t>& bytes) const {
+  std::filesystem::path write(const std::string& name,
+                              const std::vector<std::uint8_t>& bytes) const {
     const std::filesystem::path p = path_ / name;
     std::filesystem::create_directories(p.parent_path());
     std::ofstream out(p, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
     if (!out) {
       throw std::runtime_error("cannot write " + p.string());
     }
@@ -240,7 +244,8 @@ public:
     }
     const std::size_t offset = append(data.data(), data.size() * sizeof(float));
     const int view = add_view(offset, data.size() * sizeof(float), 32);
-    return {add_accessor(view, 0, f32, p.size(), "VEC3"), add_accessor(view, 12, f32, p.size(), "VEC3"),
+    return {add_accessor(view, 0, f32, p.size(), "VEC3"),
+            add_accessor(view, 12, f32, p.size(), "VEC3"),
             add_accessor(view, 24, f32, p.size(), "VEC2")};
   }
 
@@ -305,23 +310,32 @@ public:
     while (padded_bin.size() % 4 != 0) {
       padded_bin.push_back(0);
     }
-    std::vector<std::uint8_t> out;
-    auto u32le = [&out](std::uint32_t v) {
-      for (int i = 0; i < 4; ++i) {
-        out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-      }
+    const std::size_t total =
+        12 + 8 + text.size() + (padded_bin.empty() ? 0 : 8 + padded_bin.size());
+    // Sized up front and filled in place (growing it with insert() trips a false
+    // -Wstringop-overflow in GCC 12 at -O3).
+    std::vector<std::uint8_t> out(total, 0);
+    std::size_t at = 0;
+    auto put = [&out, &at](const void* data, std::size_t size) {
+      std::memcpy(out.data() + at, data, size);
+      at += size;
     };
-    const std::size_t total = 12 + 8 + text.size() + (padded_bin.empty() ? 0 : 8 + padded_bin.size());
-    out.insert(out.end(), {'g', 'l', 'T', 'F'});
+    auto u32le = [&put](std::uint32_t v) {
+      const std::uint8_t b[4] = {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8),
+                                 static_cast<std::uint8_t>(v >> 16),
+                                 static_cast<std::uint8_t>(v >> 24)};
+      put(b, 4);
+    };
+    put("glTF", 4);
     u32le(2);
     u32le(static_cast<std::uint32_t>(total));
     u32le(static_cast<std::uint32_t>(text.size()));
     u32le(0x4E4F534Au); // "JSON"
-    out.insert(out.end(), text.begin(), text.end());
+    put(text.data(), text.size());
     if (!padded_bin.empty()) {
       u32le(static_cast<std::uint32_t>(padded_bin.size()));
       u32le(0x004E4942u); // "BIN\0"
-      out.insert(out.end(), padded_bin.begin(), padded_bin.end());
+      put(padded_bin.data(), padded_bin.size());
     }
     return out;
   }
