@@ -287,3 +287,19 @@ TEST_CASE("water: no wind means a still surface, and wind changes only the water
   CHECK(changed > 1000);
   CHECK(outside == 0);
 }
+
+TEST_CASE("water: a camera on the plane or below it renders without errors (clip fallback)") {
+  test::GpuFixture gpu;
+  test::WaterRig rig = marker_rig(gpu.ctx(), {1.0f, 0.8f, 0.0f}, {-1.0f, -0.8f, 0.5f});
+  for (const float eye_y : {0.0f, 1e-6f, -1.0f}) {
+    CAPTURE(eye_y);
+    rig.camera.eye = {0.0f, eye_y, 8.0f};
+    rig.camera.target = {0.0f, eye_y, 0.0f};
+    for (const char* mode : {"oblique", "clip_distance"}) {
+      require_ok(rig.water->set_param("clip_mode", std::string(mode)));
+      const Image image = rig.render(0.0f);
+      CHECK(image.width == rig.width);
+      CHECK(rig.water->error() == nullptr);
+    }
+  }
+}

@@ -92,7 +92,10 @@ struct WaterParams {
 [[nodiscard]] WaterParams water_seed_preset(const WaterParams& base = {});
 
 /// The water effect. Create it through the registry (`create("water", info)`) or directly with
-/// create_water; cast to WaterEffect for the typed API.
+/// create_water; cast to WaterEffect for the typed API. Its per-frame uniforms live in a ring
+/// of 3 slots: a host may have at most 3 frames in flight per water effect. A camera on or
+/// below the plane cannot use an oblique near plane; the passes then clip with
+/// gl_ClipDistance whatever clip_mode says.
 class WaterEffect : public Effect {
 public:
   /// The typed parameters (validated as a whole; nothing is changed on error).
