@@ -6,6 +6,7 @@
 #include <snell/builtin_scenes.hpp>
 #include <snell/images.hpp>
 #include <snell/math.hpp>
+#include <snell/pipeline.hpp>
 
 #include "snell_water_shaders.hpp"
 
@@ -287,93 +288,34 @@ private:
     ai.pSetLayouts = &set_layout_;
     WATER_VK(vkAllocateDescriptorSets(d, &ai, &set_), "descriptor set");
 
-    auto module = [&](std::span<const std::uint32_t> code, VkShaderModule& out) -> Result<void> {
-      auto ci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-      ci.codeSize = code.size_bytes();
-      ci.pCode = code.data();
-      WATER_VK(vkCreateShaderModule(d, &ci, nullptr, &out), "shader module");
-      return {};
-    };
-    VkShaderModule vert = VK_NULL_HANDLE, frag = VK_NULL_HANDLE;
-    if (auto r = module(shaders::water_vert, vert); !r) {
-      return r;
+    auto vert = create_shader_module(d, shaders::water_vert, "water.vert");
+    auto frag = create_shader_module(d, shaders::water_frag, "water.frag");
+    Result<VkPipeline> pipeline = fail(ErrorCode::vulkan_error, "water: shader modules");
+    if (vert && frag) {
+      GraphicsPipelineDesc desc;
+      desc.vertex = *vert;
+      desc.fragment = *frag;
+      desc.layout = layout_;
+      desc.color_format = color_format_;
+      desc.depth_format = depth_format_;
+      desc.vertex_input = false;
+      desc.depth_write = false; // a blended surface: what is behind stays in the depth buffer
+      desc.alpha_blend = true;  // the soft shoreline fades the surface in by alpha
+      desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+      pipeline = create_graphics_pipeline(d, desc, "water surface pipeline");
     }
-    if (auto r = module(shaders::water_frag, frag); !r) {
-      vkDestroyShaderModule(d, vert, nullptr);
-      return r;
+    for (auto* m : {&vert, &frag}) {
+      if (*m) {
+        vkDestroyShaderModule(d, **m, nullptr);
+      }
     }
-    VkPipelineShaderStageCreateInfo stages[2];
-    for (int i = 0; i < 2; ++i) {
-      stages[i] = vk_struct<VkPipelineShaderStageCreateInfo>(
-          VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-      stages[i].stage = i == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
-      stages[i].module = i == 0 ? vert : frag;
-      stages[i].pName = "main";
+    if (!vert || !frag) {
+      return !vert ? vert.error() : frag.error();
     }
-    auto vi = vk_struct<VkPipelineVertexInputStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    auto ia = vk_struct<VkPipelineInputAssemblyStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-    auto vp = vk_struct<VkPipelineViewportStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    vp.viewportCount = 1;
-    vp.scissorCount = 1;
-    auto rs = vk_struct<VkPipelineRasterizationStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    rs.polygonMode = VK_POLYGON_MODE_FILL;
-    rs.lineWidth = 1.0f;
-    auto ms = vk_struct<VkPipelineMultisampleStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    auto ds = vk_struct<VkPipelineDepthStencilStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
-    ds.depthTestEnable = depth_format_ != VK_FORMAT_UNDEFINED;
-    ds.depthWriteEnable = VK_FALSE; // a blended surface: what is behind stays in the depth buffer
-    ds.depthCompareOp = VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState blend{};
-    blend.blendEnable = VK_TRUE; // the soft shoreline fades the surface in by alpha
-    blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-    blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    blend.colorBlendOp = VK_BLEND_OP_ADD;
-    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-    blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-    blend.alphaBlendOp = VK_BLEND_OP_ADD;
-    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                           VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    auto cb = vk_struct<VkPipelineColorBlendStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    cb.attachmentCount = 1;
-    cb.pAttachments = &blend;
-    const VkDynamicState dyn_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                         VK_DYNAMIC_STATE_CULL_MODE, VK_DYNAMIC_STATE_FRONT_FACE};
-    auto dyn = vk_struct<VkPipelineDynamicStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dyn.dynamicStateCount = 4;
-    dyn.pDynamicStates = dyn_states;
-    auto rendering =
-        vk_struct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &color_format_;
-    rendering.depthAttachmentFormat = depth_format_;
-    auto ci =
-        vk_struct<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-    ci.pNext = &rendering;
-    ci.stageCount = 2;
-    ci.pStages = stages;
-    ci.pVertexInputState = &vi;
-    ci.pInputAssemblyState = &ia;
-    ci.pViewportState = &vp;
-    ci.pRasterizationState = &rs;
-    ci.pMultisampleState = &ms;
-    ci.pDepthStencilState = &ds;
-    ci.pColorBlendState = &cb;
-    ci.pDynamicState = &dyn;
-    ci.layout = layout_;
-    const VkResult r = vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline_);
-    vkDestroyShaderModule(d, vert, nullptr);
-    vkDestroyShaderModule(d, frag, nullptr);
-    WATER_VK(r, "surface pipeline");
+    if (!pipeline) {
+      return pipeline.error();
+    }
+    pipeline_ = *pipeline;
     return {};
   }
 

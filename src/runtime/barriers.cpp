@@ -1,4 +1,5 @@
 #include "barriers.hpp"
+
 #include "vk_util.hpp"
 
 #include <algorithm>
@@ -27,6 +28,38 @@ void barrier(VkCommandBuffer cmd, const ImageBarrier* barriers, std::uint32_t co
   dep.imageMemoryBarrierCount = count;
   dep.pImageMemoryBarriers = vk.data();
   vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view,
+                     VkExtent2D extent, std::uint32_t view_mask, const float* clear,
+                     float clear_depth, bool store_depth) {
+  auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  color.imageView = color_view;
+  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.loadOp = clear != nullptr ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  if (clear != nullptr) {
+    color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
+  }
+  auto depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  depth.imageView = depth_view;
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = store_depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.clearValue.depthStencil = {clear_depth, 0};
+  auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+  ri.renderArea = {{0, 0}, extent};
+  ri.layerCount = 1;
+  ri.viewMask = view_mask;
+  ri.colorAttachmentCount = 1;
+  ri.pColorAttachments = &color;
+  ri.pDepthAttachment = depth_view != VK_NULL_HANDLE ? &depth : nullptr;
+  vkCmdBeginRendering(cmd, &ri);
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  const VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
 void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std::uint32_t height,

@@ -140,41 +140,9 @@ void CubeTarget::begin_capture(VkCommandBuffer cmd) const {
   detail::barrier(cmd, barriers, 2);
 }
 
-namespace {
-void begin(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view, std::uint32_t size,
-           std::uint32_t view_mask, const float clear[4]) {
-  VkRenderingAttachmentInfo color =
-      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  color.imageView = color_view;
-  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
-  VkRenderingAttachmentInfo depth =
-      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  depth.imageView = depth_view;
-  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
-  VkRenderingInfo ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-  ri.renderArea = {{0, 0}, {size, size}};
-  ri.layerCount = 1;
-  ri.viewMask = view_mask;
-  ri.colorAttachmentCount = 1;
-  ri.pColorAttachments = &color;
-  ri.pDepthAttachment = &depth;
-  vkCmdBeginRendering(cmd, &ri);
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(size), static_cast<float>(size),
-                            0.0f, 1.0f};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  const VkRect2D scissor{{0, 0}, {size, size}};
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-}
-} // namespace
-
 void CubeTarget::begin_face(VkCommandBuffer cmd, std::uint32_t face, const float clear[4]) const {
-  begin(cmd, face_views_[face % 6], depth_face_views_[face % 6], size_, 0, clear);
+  detail::begin_rendering(cmd, face_views_[face % 6], depth_face_views_[face % 6], {size_, size_},
+                          0, clear, 1.0f, false);
 }
 
 void CubeTarget::end_face(VkCommandBuffer cmd) const {
@@ -182,7 +150,8 @@ void CubeTarget::end_face(VkCommandBuffer cmd) const {
 }
 
 void CubeTarget::begin_multiview(VkCommandBuffer cmd, const float clear[4]) const {
-  begin(cmd, array_view_, depth_array_view_, size_, 0x3Fu, clear);
+  detail::begin_rendering(cmd, array_view_, depth_array_view_, {size_, size_}, 0x3Fu, clear, 1.0f,
+                          false);
 }
 
 void CubeTarget::end_multiview(VkCommandBuffer cmd) const {

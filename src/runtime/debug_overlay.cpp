@@ -1,6 +1,7 @@
 #include "debug_overlay.hpp"
 
-#include "pipeline_util.hpp"
+#include <snell/pipeline.hpp>
+
 #include "snell_runtime_shaders.hpp"
 #include "vk_util.hpp"
 

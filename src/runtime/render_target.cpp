@@ -145,32 +145,8 @@ void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
   };
   detail::barrier(cmd, barriers, depth_ != VK_NULL_HANDLE ? 2 : 1);
 
-  VkRenderingAttachmentInfo color =
-      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  color.imageView = color_level0_view_;
-  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
-  VkRenderingAttachmentInfo depth =
-      vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  depth.imageView = depth_view_;
-  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  depth.clearValue.depthStencil = {clear_depth, 0};
-  VkRenderingInfo ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-  ri.renderArea = {{0, 0}, {width_, height_}};
-  ri.layerCount = 1;
-  ri.colorAttachmentCount = 1;
-  ri.pColorAttachments = &color;
-  ri.pDepthAttachment = depth_ != VK_NULL_HANDLE ? &depth : nullptr;
-  vkCmdBeginRendering(cmd, &ri);
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(width_), static_cast<float>(height_),
-                            0.0f, 1.0f};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  const VkRect2D scissor{{0, 0}, {width_, height_}};
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  detail::begin_rendering(cmd, color_level0_view_, depth_view_, {width_, height_}, 0, clear,
+                          clear_depth, true);
 }
 
 void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
@@ -181,22 +157,8 @@ void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
-  auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  color.imageView = color_level0_view_;
-  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-  ri.renderArea = {{0, 0}, {width_, height_}};
-  ri.layerCount = 1;
-  ri.colorAttachmentCount = 1;
-  ri.pColorAttachments = &color;
-  vkCmdBeginRendering(cmd, &ri);
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(width_), static_cast<float>(height_),
-                            0.0f, 1.0f};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  const VkRect2D scissor{{0, 0}, {width_, height_}};
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  detail::begin_rendering(cmd, color_level0_view_, VK_NULL_HANDLE, {width_, height_}, 0, nullptr,
+                          1.0f, false);
 }
 
 void RenderTarget::end_overlay(VkCommandBuffer cmd) const {

@@ -1,10 +1,10 @@
 // The default host's forward renderer: uploads a Scene and draws it for any SceneView.
 #include <snell/buffer.hpp>
 #include <snell/images.hpp>
+#include <snell/pipeline.hpp>
 #include <snell/scene_renderer.hpp>
 
 #include "context_impl.hpp"
-#include "pipeline_util.hpp"
 #include "snell_runtime_shaders.hpp"
 #include "vk_util.hpp"
 
@@ -270,7 +270,7 @@ Result<void> SceneRenderer::Impl::init(const Context& context) {
   // Shaders.
   auto module = [&](std::span<const std::uint32_t> code, const char* name,
                     VkShaderModule& out) -> Result<void> {
-    auto m = detail::create_shader_module(d, code, name);
+    auto m = create_shader_module(d, code, name);
     if (!m) {
       return m.error();
     }
@@ -293,7 +293,7 @@ Result<const Pipelines*> SceneRenderer::Impl::pipelines_for(const SceneView& vie
   if (auto it = pipelines.find(key); it != pipelines.end()) {
     return &it->second;
   }
-  detail::GraphicsPipelineDesc desc;
+  GraphicsPipelineDesc desc;
   desc.vertex = scene_vert;
   desc.fragment = scene_frag;
   desc.layout = layout;
@@ -301,16 +301,16 @@ Result<const Pipelines*> SceneRenderer::Impl::pipelines_for(const SceneView& vie
   desc.depth_format = view.depth_format;
   desc.view_mask = view.view_mask;
   Pipelines p;
-  auto opaque = detail::create_graphics_pipeline(ctx->device, desc, "scene opaque pipeline");
+  auto opaque = create_graphics_pipeline(ctx->device, desc, "scene opaque pipeline");
   desc.alpha_blend = true;
   desc.depth_write = false;
-  auto blend = detail::create_graphics_pipeline(ctx->device, desc, "scene blend pipeline");
+  auto blend = create_graphics_pipeline(ctx->device, desc, "scene blend pipeline");
   desc.vertex = sky_vert;
   desc.fragment = sky_frag;
   desc.vertex_input = false;
   desc.alpha_blend = false;
   desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
-  auto sky = detail::create_graphics_pipeline(ctx->device, desc, "sky pipeline");
+  auto sky = create_graphics_pipeline(ctx->device, desc, "sky pipeline");
   if (!opaque || !blend || !sky) {
     for (auto* r : {&opaque, &blend, &sky}) {
       if (*r) {

@@ -1,4 +1,4 @@
-#include "pipeline_util.hpp"
+#include <snell/pipeline.hpp>
 
 #include <snell/scene.hpp>
 
@@ -6,7 +6,9 @@
 
 #include <cstddef>
 
-namespace snell::detail {
+namespace snell {
+
+using detail::vk_init;
 
 Result<VkShaderModule> create_shader_module(VkDevice device, std::span<const std::uint32_t> code,
                                             std::string_view name) {
@@ -73,7 +75,7 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
     blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
     blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     blend.colorBlendOp = VK_BLEND_OP_ADD;
-    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE; // alpha "over": a + dst.a * (1 - a)
     blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     blend.alphaBlendOp = VK_BLEND_OP_ADD;
   }
@@ -111,4 +113,4 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
   return pipeline;
 }
 
-} // namespace snell::detail
+} // namespace snell
