@@ -98,9 +98,15 @@ public:
       return r;
     }
     params_ = next;
+    if (key == "preset") {
+      preset_ = std::get<std::string>(value);
+    }
     return {};
   }
   Result<ParamValue> get_param(std::string_view key) const override {
+    if (key == "preset") {
+      return ParamValue{preset_}; // the last preset applied
+    }
     return detail::read_water_param(params_, key);
   }
   Result<void> set_params(const WaterParams& params) override {
@@ -187,11 +193,12 @@ public:
     glm::vec2 wind =
         glm::length(p.wind_direction) > 1e-6f ? glm::normalize(p.wind_direction) : glm::vec2(0.0f);
     wind *= p.wind_force;
-    // The second layer drifts across the wind so the two layers never move in lock-step.
+    // The second layer drifts 37 degrees off the wind at 0.7 of its speed, so the two layers
+    // never move in lock-step (that would show the tiling) while both go downwind.
     const glm::vec2 wind2 =
-        glm::vec2(-wind.y * 0.6f + wind.x * 0.8f, wind.x * 0.6f + wind.y * 0.8f);
+        0.7f * glm::vec2(wind.x * 0.8f - wind.y * 0.6f, wind.x * 0.6f + wind.y * 0.8f);
     b.wave = glm::vec4(1.0f / p.wave_length, p.wave_height, p.distortion, info.time);
-    b.wind = glm::vec4(wind, wind2 * 0.7f);
+    b.wind = glm::vec4(wind, wind2);
     b.water_color = glm::vec4(p.water_color, p.color_blend);
     b.absorption = glm::vec4(p.absorption, p.shore_softness);
     b.light_dir = glm::vec4(glm::normalize(info.light.direction), p.specular_intensity);
@@ -299,8 +306,8 @@ private:
       desc.color_format = color_format_;
       desc.depth_format = depth_format_;
       desc.vertex_input = false;
-      desc.depth_write = false; // a blended surface: what is behind stays in the depth buffer
-      desc.alpha_blend = true;  // the soft shoreline fades the surface in by alpha
+      // The surface does not write depth: the scene's depth behind it stays for effects after it.
+      desc.depth_write = false;
       desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
       pipeline = create_graphics_pipeline(d, desc, "water surface pipeline");
     }
@@ -359,6 +366,7 @@ private:
   VkFormat color_format_ = VK_FORMAT_UNDEFINED;
   VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
   WaterParams params_;
+  std::string preset_ = "default";
   FrameInfo info_;
   SceneView reflection_view_, refraction_view_;
   RenderTarget reflection_, refraction_;

@@ -49,7 +49,8 @@ ParamSchema build_schema() {
     s.params.push_back(ParamSpec{name, ParamType::integer, def, float(lo), float(hi), {}, "", doc});
   };
   enumeration("preset", "default", {"default", "seed"},
-              "Resets every parameter but height/center/size to a preset (seed = seeds 000/001)");
+              "Resets every parameter but height/center/size to a preset (seed = seeds 000/001); "
+              "reads back the last preset applied");
   num("height", d.height, -1e4f, 1e4f, "m", "Height of the water plane y = height");
   vec2("center", d.center, -1e4f, 1e4f, "m", "Centre (x, z) of the water rectangle");
   vec2("size", d.size, 0.01f, 1e5f, "m", "Size (x, z) of the water rectangle");
@@ -82,7 +83,7 @@ ParamSchema build_schema() {
                                "1/m",
                                "Beer-Lambert absorption per metre along the view ray"});
   num("shore_softness", d.shore_softness, 0.0f, 100.0f, "m",
-      "Water depth over which the shoreline fades in (0 = hard edge)");
+      "Water depth over which distortion, reflection and highlight fade in at the shore");
   integer("reflection_layers", d.reflection_layers, 0, 255,
           "Objects drawn in the reflection (snell::layer bits)");
   integer("refraction_layers", d.refraction_layers, 0, 255,

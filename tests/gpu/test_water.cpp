@@ -303,3 +303,67 @@ TEST_CASE("water: a camera on the plane or below it renders without errors (clip
     }
   }
 }
+
+namespace {
+
+/// The integer shift (dx, dy) in pixels that best maps `a` onto `b` (b(x, y) ~ a(x - dx,
+/// y - dy)) over the central window, by least squares over a +-range search.
+glm::ivec2 best_shift(const Image& a, const Image& b, int range) {
+  double best = 1e300;
+  glm::ivec2 arg(0);
+  const int w = static_cast<int>(a.width), h = static_cast<int>(a.height);
+  for (int dy = -range; dy <= range; ++dy) {
+    for (int dx = -range; dx <= range; ++dx) {
+      double sum = 0.0;
+      for (int y = h / 4; y < 3 * h / 4; ++y) {
+        for (int x = w / 4; x < 3 * w / 4; ++x) {
+          const std::uint8_t* pa = &a.rgba8[(std::size_t(y - dy) * a.width + (x - dx)) * 4];
+          const std::uint8_t* pb = &b.rgba8[(std::size_t(y) * b.width + x) * 4];
+          for (int c = 0; c < 3; ++c) {
+            const double d = double(pa[c]) - double(pb[c]);
+            sum += d * d;
+          }
+        }
+      }
+      if (sum < best) {
+        best = sum;
+        arg = {dx, dy};
+      }
+    }
+  }
+  return arg;
+}
+
+} // namespace
+
+TEST_CASE("water: ripples move downwind") {
+  test::GpuFixture gpu;
+  test::WaterRig rig;
+  rig.scene = test::water_test_scene();
+  // Straight down from 10 m: image up is world +z, image right is world -x.
+  rig.camera.eye = {0.0f, 10.0f, 0.0f};
+  rig.camera.target = {0.0f, 0.0f, 0.0f};
+  rig.camera.up = {0.0f, 0.0f, 1.0f};
+  rig.camera.yfov = glm::radians(50.0f);
+  rig.init(gpu.ctx());
+  require_ok(rig.water->set_param("debug_view", std::string("normals")));
+  require_ok(rig.water->set_param("wave_height", 1.0f));
+  require_ok(rig.water->set_param("wind_force", 1.0f));
+  // 0.4 s at 1 m/s: 0.4 m, about 8 pixels at 20.6 px/m (192 px over 2 * 10 * tan 25 = 9.3 m).
+  struct Case {
+    glm::vec2 wind;
+    glm::ivec2 sign; // expected direction on screen
+  };
+  for (const Case c : {Case{{0, 1}, {0, -1}}, Case{{0, -1}, {0, 1}}, Case{{1, 0}, {-1, 0}}}) {
+    CAPTURE(c.wind);
+    require_ok(rig.water->set_param("wind_direction", c.wind));
+    const Image a = rig.render(0.0f);
+    const Image b = rig.render(0.4f);
+    const glm::ivec2 s = best_shift(a, b, 14);
+    CAPTURE(s);
+    // Downwind, at between the second layer's (0.7) and the first layer's (1.0) speed.
+    const int along = c.sign.x * s.x + c.sign.y * s.y;
+    CHECK(along >= 4);
+    CHECK(along <= 10);
+  }
+}

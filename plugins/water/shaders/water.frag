@@ -23,14 +23,25 @@ void main() {
   float height = -water.plane.w;
   vec2 uv = gl_FragCoord.xy * water.extent.zw; // == project_to_uv(view_proj * p, vulkan)
 
-  // Two normal-map layers scrolled along the wind at different scales hide the tiling.
+  // Soft shoreline: 0 where the water meets geometry, 1 from shore_softness metres of depth on.
+  bool hit0;
+  vec3 q0 = underwater_point(uv, hit0);
+  float depth_below = hit0 ? max(height - q0.y, 0.0) : 1e4;
+  float shore = water.absorption.a > 0.0 ? smoothstep(0.0, water.absorption.a, depth_below) : 1.0;
+
+  // Two normal-map layers scrolled along the wind at different scales hide the tiling. A
+  // pattern moves with velocity w when its texture coordinate is (x - w t) / wave_length; the
+  // second layer is scaled by 0.43, so its offset is scaled alike to keep its world speed.
   vec2 base = p.xz * water.wave.x;
-  vec3 n1 = texture(normal_map, base + water.wind.xy * water.wave.x * water.wave.w).xyz * 2.0 - 1.0;
-  vec3 n2 = texture(normal_map, base * 0.43 + vec2(0.37, 0.11) + water.wind.zw * water.wave.x * water.wave.w).xyz * 2.0 - 1.0;
+  float t = water.wave.w * water.wave.x;
+  vec3 n1 = texture(normal_map, base - water.wind.xy * t).xyz * 2.0 - 1.0;
+  vec3 n2 = texture(normal_map, (base - water.wind.zw * t) * 0.43 + vec2(0.37, 0.11)).xyz * 2.0 - 1.0;
   vec2 slope = (n1.xy + n2.xy) * water.wave.y;
   // Tangent space: x = +x world, y (green, toward the image top = decreasing v) = -z world.
   vec3 n = normalize(vec3(slope.x, 1.0, -slope.y));
-  vec2 offset = slope * water.wave.z;
+  // Near the shore the distortion fades out, so the refracted ground meets the real ground
+  // without a seam.
+  vec2 offset = slope * water.wave.z * shore;
 
   vec3 reflection = texture(reflection_tex, uv + offset).rgb;
 
@@ -49,12 +60,6 @@ void main() {
   vec3 transmittance = exp(-water.absorption.rgb * thickness);
   vec3 refracted = refraction * transmittance + water.water_color.rgb * (1.0 - transmittance);
 
-  // Soft shoreline: fade in over the first shore_softness metres of water depth.
-  bool hit0;
-  vec3 q0 = underwater_point(uv, hit0);
-  float depth_below = hit0 ? max(height - q0.y, 0.0) : 1e4;
-  float alpha = water.absorption.a > 0.0 ? smoothstep(0.0, water.absorption.a, depth_below) : 1.0;
-
   vec3 v = normalize(water.eye.xyz - p);
   float cos_v = max(dot(n, v), 0.0);
   int mode = int(water.fresnel.x + 0.5);
@@ -66,10 +71,13 @@ void main() {
   } else {
     f = 1.0 - cos_v; // seed 001: lerp(reflection, refraction, dot(eye, normal))
   }
+  // A thin film over uneven ground does not mirror: reflection and highlight fade in with the
+  // water depth too. The surface stays opaque, so the water never "disappears".
+  f *= shore;
   vec3 color = mix(refracted, reflection, f);
   color = mix(color, water.water_color.rgb, water.water_color.a);
   vec3 r = reflect(normalize(water.light_dir.xyz), n);
-  float spec = pow(max(dot(r, v), 0.0), water.light_color.a) * water.light_dir.w;
+  float spec = pow(max(dot(r, v), 0.0), water.light_color.a) * water.light_dir.w * shore;
   color += water.light_color.rgb * spec;
 
   int view = int(water.fresnel.w + 0.5);
@@ -82,5 +90,5 @@ void main() {
   } else if (view == 4) {
     color = vec3(f);
   }
-  out_color = vec4(color, view == 0 ? alpha : 1.0);
+  out_color = vec4(color, 1.0);
 }

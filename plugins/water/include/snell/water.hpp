@@ -76,7 +76,10 @@ struct WaterParams {
   /// Beer-Lambert absorption per metre of water along the view ray, per channel (1/m).
   /// Default (0.45, 0.09, 0.07): red fades first. 0 = clear water. Each [0, 100].
   glm::vec3 absorption{0.45f, 0.09f, 0.07f};
-  /// Water depth over which the shoreline fades in, m. 0 = hard edge. Default 0.15. [0, 100].
+  /// Soft shoreline: over the first shore_softness metres of water depth (read from the
+  /// refraction pass's depth) the ripple distortion, the reflection and the highlight fade in,
+  /// so the refracted ground meets the real ground without a seam. The surface stays opaque.
+  /// 0 = hard edge. Default 0.15 m. [0, 100].
   float shore_softness = 0.15f;
   /// Objects drawn in the reflection (snell::layer bits). Default layer::reflected.
   int reflection_layers = static_cast<int>(layer::reflected);

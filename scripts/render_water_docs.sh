@@ -1,0 +1,221 @@
+#!/usr/bin/env bash
+# Renders every picture of docs/water.md into docs/images/water/ with the `snell` CLI, or checks
+# docs/water.md's parameter table against `snell list`.
+#
+# Usage:
+#   bash scripts/render_water_docs.sh                 render the pictures (about 10 s on lavapipe)
+#   bash scripts/render_water_docs.sh --check-table   check the parameter table; exit 1 on mismatch
+#
+# The CLI is build/default/samples/cli/snell (build it with
+# `cmake --preset default && cmake --build --preset default --target snell`); SNELL=/path/to/snell
+# overrides it. The device is the CLI's choice (lavapipe unless a GPU is present; SNELL_DEVICE
+# chooses). The pictures in the repository were rendered on lavapipe.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+repo_root="$(pwd)"
+snell="${SNELL:-$repo_root/build/default/samples/cli/snell}"
+doc="$repo_root/docs/water.md"
+out_dir="$repo_root/docs/images/water"
+
+mode=render
+case "${1:-}" in
+  "") ;;
+  --check-table) mode=check ;;
+  -h | --help)
+    sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    exit 0
+    ;;
+  *)
+    echo "render_water_docs.sh: unknown argument '$1' (use --check-table or nothing)" >&2
+    exit 2
+    ;;
+esac
+
+if [[ ! -x "$snell" ]]; then
+  echo "render_water_docs.sh: the snell CLI is missing or not executable: $snell" >&2
+  echo "  build it: cmake --preset default && cmake --build --preset default --target snell" >&2
+  echo "  (or point SNELL at a built snell binary)" >&2
+  exit 1
+fi
+
+# ==== --check-table ==============================================================================
+# Every water parameter printed by `snell list` must have a row in the table between
+# <!-- water-params:begin --> and <!-- water-params:end --> of docs/water.md with the same name,
+# type, default, range and unit (backticks are ignored), and the table must have no other rows.
+if [[ $mode == check ]]; then
+  if [[ ! -f "$doc" ]]; then
+    echo "render_water_docs.sh: $doc does not exist" >&2
+    exit 1
+  fi
+  list_out="$("$snell" list)" || {
+    echo "render_water_docs.sh: '$snell list' failed" >&2
+    exit 1
+  }
+  SNELL_LIST="$list_out" python3 - "$doc" <<'PY'
+import os, re, sys
+
+def parse_list(text):
+    """Parses the water section of `snell list`, which prints each parameter with
+    printf("  %-20s %-6s default %-18s %-26s %-4s %s\n", name, type, default, range, unit, doc)."""
+    params, in_water = [], False
+    for line in text.splitlines():
+        if not line.startswith("  "):
+            in_water = line.startswith("water:")
+            continue
+        if not in_water:
+            continue
+        pos = 2
+
+        def token(width, bracketed=False):
+            nonlocal pos
+            if bracketed and line.startswith("[", pos):
+                end = line.index("]", pos) + 1
+            else:
+                end = pos
+                while end < len(line) and line[end] != " ":
+                    end += 1
+            value = line[pos:end]
+            pos = max(end, pos + width) + 1  # the field's padding, then the separating space
+            return value.strip()
+
+        name = token(20)
+        ptype = token(6)
+        if not line.startswith("default ", pos):
+            sys.exit(f"check-table: cannot parse `snell list` line: {line!r}")
+        pos += len("default ")
+        default = token(18)
+        prange = token(26, bracketed=True)
+        unit = token(4)
+        params.append((name, ptype, default, prange, unit))
+    return params
+
+def parse_table(path):
+    rows, inside = {}, False
+    for number, line in enumerate(open(path, encoding="utf-8"), 1):
+        if "<!-- water-params:begin -->" in line:
+            inside = True
+            continue
+        if "<!-- water-params:end -->" in line:
+            inside = False
+            continue
+        if not inside or not line.startswith("|"):
+            continue
+        # Cells split at unescaped pipes; `a\|b` in a cell (an enumeration's choices) is a|b.
+        cells = [c.strip().replace("\\|", "|")
+                 for c in re.split(r"(?<!\\)\|", line.strip()[1:-1])]
+        if len(cells) < 6 or set(cells[0]) <= set("-: ") or cells[0].lower() == "name":
+            continue
+        key = cells[0].strip("`")
+        if key in rows:
+            print(f"check-table: {path}:{number}: '{key}' has two rows")
+            rows[key] = None
+            continue
+        got = [c.strip("`").strip() for c in cells[1:5]]
+        if got[3] in ("-", "\u2013", "\u2014"):  # a dash in the unit column means no unit
+            got[3] = ""
+        rows[key] = tuple(got)
+    return rows
+
+params = parse_list(os.environ["SNELL_LIST"])
+if not params:
+    sys.exit("check-table: `snell list` printed no water parameters")
+rows = parse_table(sys.argv[1])
+if not rows:
+    sys.exit(f"check-table: no table between <!-- water-params:begin/end --> in {sys.argv[1]}")
+errors = 0
+fields = ("type", "default", "range", "unit")
+for name, *expected in params:
+    got = rows.get(name)
+    if got is None:
+        print(f"check-table: parameter '{name}' is missing from the table"
+              if name not in rows else f"check-table: '{name}' is listed twice")
+        errors += 1
+        continue
+    for field, want, have in zip(fields, expected, got):
+        if want != have:
+            print(f"check-table: '{name}': {field} is '{have}' in the table, `snell list` says '{want}'")
+            errors += 1
+known = {p[0] for p in params}
+for name in rows:
+    if name not in known:
+        print(f"check-table: the table has '{name}', which `snell list` does not know")
+        errors += 1
+if errors:
+    print(f"check-table: {errors} mismatch(es) between docs/water.md and `snell list`")
+    sys.exit(1)
+print(f"check-table: all {len(params)} water parameters match `snell list` "
+      "(name, type, default, range, unit)")
+PY
+  exit $?
+fi
+
+# ==== render =====================================================================================
+mkdir -p "$out_dir"
+
+# Cameras (the pool: water at y = 2.75 over x, z in [-4, 4], rim at y = 3, brick wall at z = 8).
+# They are passed to render() by name (a nameref), and the commas are the CLI's vector syntax.
+# shellcheck disable=SC2034,SC2054
+{
+  cam_default=()                                                 # the scene's camera, high
+  cam_low=(--eye 0,3.8,-5.5 --target 0,2.6,4)                    # low, across the whole pool
+  cam_grazing=(--eye -3,3.5,-4.2 --target 0,2.6,4)               # 0.75 m above the water: Fresnel
+  cam_ball=(--eye -0.3,3.1,-1 --target -1,2.5,2)                 # the orange ball at the water line
+}
+
+count=0
+# render NAME WxH CAMERA_ARRAY_NAME [extra CLI arguments...]
+render() {
+  local name="$1" size="$2" cam_name="$3"
+  shift 3
+  local -n cam="$cam_name"
+  local log
+  if ! log="$("$snell" render --scene pool --effect water --size "$size" \
+    --out "$out_dir/$name.png" "${cam[@]}" "$@" 2>&1)"; then
+    echo "$log" >&2
+    echo "render_water_docs.sh: rendering $name.png failed" >&2
+    exit 1
+  fi
+  count=$((count + 1))
+  echo "  snell render --scene pool --effect water --size $size --out ${out_dir#"$repo_root"/}/$name.png" \
+    "${cam[@]}" "$@"
+}
+
+echo "rendering into ${out_dir#"$repo_root"/} with $snell"
+render pool_water 640x360 cam_default
+render low_default 480x270 cam_low
+# wave_height: 0, 0.3 (default: low_default), 1
+render wave_height_0 480x270 cam_low --set water.wave_height=0
+render wave_height_1 480x270 cam_low --set water.wave_height=1.0
+# Fresnel modes, final image and the Fresnel term (debug_view=fresnel)
+for f in exact schlick seed; do
+  render "fresnel_$f" 480x270 cam_grazing --set "water.fresnel=$f"
+  render "fresnel_term_$f" 480x270 cam_grazing --set "water.fresnel=$f" --set water.debug_view=fresnel
+done
+# debug views (fresnel: see fresnel_term_exact)
+for v in reflection refraction normals; do
+  render "debug_$v" 480x270 cam_low --set "water.debug_view=$v"
+done
+# absorption: 0, default (low_default), strong
+render absorption_0 480x270 cam_low --set water.absorption=0,0,0
+render absorption_strong 480x270 cam_low --set water.absorption=1.5,0.3,0.2
+# shore_softness: 0 and 0.5 at the orange ball's water line
+render shore_0 480x270 cam_ball --set water.shore_softness=0
+render shore_0.5 480x270 cam_ball --set water.shore_softness=0.5
+# clip_mode: clip_distance (oblique is low_default)
+render clip_distance 480x270 cam_low --set water.clip_mode=clip_distance
+# the seed preset (default: low_default and pool_water)
+render seed_preset 480x270 cam_low --set water.preset=seed
+render seed_preset_pool 640x360 cam_default --set water.preset=seed
+# resolution_scale: 0.25 and 1 (0.5 is low_default)
+render resolution_0.25 480x270 cam_low --set water.resolution_scale=0.25
+render resolution_1 480x270 cam_low --set water.resolution_scale=1.0
+# --debug-targets thumbnails
+render debug_targets 640x360 cam_low --debug-targets
+
+total=$(du -cb "$out_dir"/*.png | tail -n 1 | cut -f 1)
+pngs=("$out_dir"/*.png)
+echo "rendered $count pictures; docs/images/water/ holds ${#pngs[@]} PNGs, $((total / 1024)) KiB in all"
+if ((total > 6 * 1024 * 1024)); then
+  echo "render_water_docs.sh: warning: the pictures exceed 6 MiB" >&2
+fi
