@@ -112,8 +112,9 @@ def parse_table(path):
             rows[key] = None
             continue
         got = [c.strip("`").strip() for c in cells[1:5]]
-        if got[3] in ("-", "\u2013", "\u2014"):  # a dash in the unit column means no unit
-            got[3] = ""
+        for column in (2, 3):  # a dash in the range or unit column means none
+            if got[column] in ("-", "\u2013", "\u2014"):
+                got[column] = ""
         rows[key] = tuple(got)
     return rows
 

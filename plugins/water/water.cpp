@@ -58,12 +58,7 @@ public:
         params_.size = glm::max(glm::vec2(a->size.x, a->size.z), glm::vec2(0.01f));
       }
     }
-    auto normals = make_noise_normal_map(256, 1.0f, 7u);
-    if (!normals) {
-      return normals.error();
-    }
-    normals->name = "water ripples";
-    auto tex = Texture2D::create(*ctx_, *normals, true);
+    auto tex = load_normal_map("");
     auto repeat = Sampler::create(*ctx_, SamplerDesc{true, true, AddressMode::repeat, 1.0f});
     auto clamp = Sampler::create(*ctx_, SamplerDesc{true, false, AddressMode::clamp_to_edge, 1.0f});
     auto nearest =
@@ -97,6 +92,9 @@ public:
     if (auto r = detail::apply_water_param(next, key, value); !r) {
       return r;
     }
+    if (auto r = apply_normal_map(next.normal_map); !r) {
+      return r;
+    }
     params_ = next;
     if (key == "preset") {
       preset_ = std::get<std::string>(value);
@@ -111,6 +109,9 @@ public:
   }
   Result<void> set_params(const WaterParams& params) override {
     if (auto r = detail::validate_water_params(params); !r) {
+      return r;
+    }
+    if (auto r = apply_normal_map(params.normal_map); !r) {
       return r;
     }
     params_ = params;
@@ -220,6 +221,40 @@ public:
   }
 
 private:
+  /// The procedural ripples for "", else the file (linear data, mips).
+  Result<Texture2D> load_normal_map(const std::string& file) const {
+    if (!file.empty()) {
+      auto tex = Texture2D::load(*ctx_, file, false, true);
+      if (!tex) {
+        return fail(tex.error().code, "water.normal_map: " + tex.error().message);
+      }
+      return tex;
+    }
+    auto normals = make_noise_normal_map(256, 1.0f, 7u);
+    if (!normals) {
+      return normals.error();
+    }
+    normals->name = "water ripples";
+    return Texture2D::create(*ctx_, *normals, true);
+  }
+
+  /// Loads a new normal map when the path changed; the old one stays on error.
+  Result<void> apply_normal_map(const std::string& file) {
+    if (file == params_.normal_map && normal_map_.view() != VK_NULL_HANDLE) {
+      return {};
+    }
+    auto tex = load_normal_map(file);
+    if (!tex) {
+      return tex.error();
+    }
+    vkDeviceWaitIdle(ctx_->device()); // the old map may be in use by a frame in flight
+    normal_map_ = std::move(*tex);
+    if (reflection_) {
+      write_descriptors();
+    }
+    return {};
+  }
+
   void compute_views() {
     const WaterParams& p = params_;
     const SceneView& main = info_.main_view;

@@ -90,6 +90,15 @@ ParamSchema build_schema() {
           "Objects drawn in the refraction (snell::layer bits)");
   enumeration("debug_view", kDebugViews[static_cast<int>(d.debug_view)], choices(kDebugViews),
               "What the surface shows: final, reflection, refraction, normals, fresnel");
+  s.params.push_back(
+      ParamSpec{"normal_map",
+                ParamType::texture,
+                d.normal_map,
+                0,
+                0,
+                {},
+                "",
+                "Ripple normal map file (tangent space, tileable); \"\" = built-in"});
   return s;
 }
 
@@ -185,6 +194,8 @@ Result<void> apply_water_param(WaterParams& p, std::string_view key, const Param
     p.refraction_layers = std::get<int>(value);
   } else if (key == "debug_view") {
     p.debug_view = static_cast<WaterDebugView>(index_of(kDebugViews, s()));
+  } else if (key == "normal_map") {
+    p.normal_map = s();
   }
   return {};
 }
@@ -240,6 +251,8 @@ Result<ParamValue> read_water_param(const WaterParams& p, std::string_view key) 
     return ParamValue{p.reflection_layers};
   if (key == "refraction_layers")
     return ParamValue{p.refraction_layers};
+  if (key == "normal_map")
+    return ParamValue{p.normal_map};
   return ParamValue{std::string(kDebugViews[static_cast<int>(p.debug_view)])};
 }
 

@@ -71,7 +71,7 @@ TEST_CASE("water: schema defaults are WaterParams' defaults (pinned)") {
   auto water = create_water(info);
   REQUIRE(water.has_value());
   const ParamSchema& schema = water_schema();
-  CHECK(schema.params.size() == 23);
+  CHECK(schema.params.size() == 24);
   for (const ParamSpec& spec : schema.params) {
     CAPTURE(spec.name);
     CHECK_FALSE(spec.doc.empty());
@@ -141,6 +141,31 @@ TEST_CASE("water: set_param errors name the key, value and range, and nothing is
   CHECK(std::get<glm::vec2>(*parsed) == glm::vec2(1.5f, -2.0f));
   CHECK_FALSE(parse_param(schema, *schema.find("center"), "1.5").has_value());
   CHECK_FALSE(parse_param(schema, *schema.find("wave_height"), "inf").has_value());
+}
+
+TEST_CASE("water: normal_map loads a file, and a missing one is an error naming it") {
+  test::GpuFixture gpu;
+  EffectCreateInfo info;
+  info.context = &gpu.ctx();
+  auto created = create_water(info);
+  REQUIRE(created.has_value());
+  WaterEffect& w = **created;
+  auto missing = w.set_param("normal_map", std::string("/nonexistent/ripples.png"));
+  REQUIRE_FALSE(missing.has_value());
+  CHECK(missing.error().message.find("/nonexistent/ripples.png") != std::string::npos);
+  CHECK(w.params().normal_map.empty()); // unchanged
+  // A flat 4x4 normal map file: accepted, read back, and the built-in one restored with "".
+  Image flat;
+  flat.name = "flat";
+  flat.width = flat.height = 4;
+  for (int i = 0; i < 16; ++i) {
+    flat.rgba8.insert(flat.rgba8.end(), {128, 128, 255, 255});
+  }
+  const std::string path = std::string(SNELL_TEST_OUTPUT_DIR) + "/flat_normals.png";
+  test::save_png(flat, "flat_normals");
+  require_ok(w.set_param("normal_map", path));
+  CHECK(std::get<std::string>(*w.get_param("normal_map")) == path);
+  require_ok(w.set_param("normal_map", std::string()));
 }
 
 TEST_CASE("water: mirror probe - a marker above the water appears where reflection_matrix says") {

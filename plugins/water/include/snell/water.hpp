@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 namespace snell {
 
@@ -87,6 +88,10 @@ struct WaterParams {
   int refraction_layers = static_cast<int>(layer::refracted);
   /// What the surface shows. Default final.
   WaterDebugView debug_view = WaterDebugView::final;
+  /// Ripple normal map: a PNG/JPEG file (tangent-space, linear, green toward the image top,
+  /// tileable), or "" for the built-in procedural one (256x256, seeded). Loaded when set; a
+  /// missing or undecodable file is an error naming it. Default "".
+  std::string normal_map;
 };
 
 /// The `seed` preset: seeds 000/001 for side-by-side comparison: full-resolution targets,
