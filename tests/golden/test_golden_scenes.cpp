@@ -55,9 +55,9 @@ Rendered render_builtin(const std::string& name, const std::string& water_preset
       REQUIRE(water->set_param("preset", water_preset));
     }
     Effect* effects[] = {water.get()};
-    auto stats = water ? frame->render(*renderer, scene->cameras.front(), 0.0f, effects,
-                                       scene->light)
-                       : frame->render(*renderer, scene->cameras.front(), 0.0f);
+    auto stats = water
+                     ? frame->render(*renderer, scene->cameras.front(), 0.0f, effects, scene->light)
+                     : frame->render(*renderer, scene->cameras.front(), 0.0f);
     REQUIRE_MESSAGE(stats.has_value(), stats.error().message);
     auto image = frame->read_color();
     REQUIRE(image.has_value());

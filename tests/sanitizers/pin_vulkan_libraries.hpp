@@ -10,7 +10,8 @@
 
 namespace snell::test_support {
 inline const bool vulkan_libraries_pinned = [] {
-  for (const char* lib : {"libvulkan.so.1", "libvulkan_lvp.so", "libVkLayer_khronos_validation.so"}) {
+  for (const char* lib :
+       {"libvulkan.so.1", "libvulkan_lvp.so", "libVkLayer_khronos_validation.so"}) {
     (void)dlopen(lib, RTLD_NOW | RTLD_NODELETE | RTLD_GLOBAL);
   }
   return true;
