@@ -162,6 +162,7 @@ mkdir -p "$out_dir"
   cam_low=(--eye 0,3.8,-5.5 --target 0,2.6,4)                    # low, across the whole pool
   cam_grazing=(--eye -3,3.5,-4.2 --target 0,2.6,4)               # 0.75 m above the water: Fresnel
   cam_ball=(--eye -0.3,3.1,-1 --target -1,2.5,2)                 # the orange ball at the water line
+  cam_under=(--eye 0,1.6,-2 --target 0,3.6,0.4)                  # under the water, looking up
 }
 
 count=0
@@ -211,6 +212,9 @@ render seed_preset_pool 640x360 cam_default --set water.preset=seed
 # resolution_scale: 0.25 and 1 (0.5 is low_default)
 render resolution_0.25 480x270 cam_low --set water.resolution_scale=0.25
 render resolution_1 480x270 cam_low --set water.resolution_scale=1.0
+# from under the water: total internal reflection and Snell's window
+render underwater 480x270 cam_under
+render underwater_fresnel 480x270 cam_under --set water.debug_view=fresnel --set water.wave_height=0
 # --debug-targets thumbnails
 render debug_targets 640x360 cam_low --debug-targets
 

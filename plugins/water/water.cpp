@@ -23,7 +23,7 @@ struct WaterBlock {
   glm::mat4 view_proj;
   glm::mat4 refraction_inv_vp;
   glm::vec4 eye, plane, rect, wave, wind, water_color, absorption, light_dir, light_color, fresnel,
-      extent;
+      extent, side;
 };
 
 constexpr std::uint32_t kSlots = 3; // uniform slots: frames a host may have in flight
@@ -209,6 +209,7 @@ public:
     const VkExtent2D e = info.main_view.extent;
     b.extent =
         glm::vec4(float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height));
+    b.side = glm::vec4(underwater_ ? -1.0f : 1.0f, p.ior, 0.0f, 0.0f);
     const std::uint32_t slot = slot_;
     slot_ = (slot_ + 1) % kSlots;
     std::memcpy(static_cast<char*>(ubo_.mapped()) + stride_ * slot, &b, sizeof(b));
@@ -258,26 +259,33 @@ private:
   void compute_views() {
     const WaterParams& p = params_;
     const SceneView& main = info_.main_view;
-    // Reflection: mirrored camera, keeps y >= height - clip_offset.
+    // Reflection: mirrored camera; refraction: the main camera. Seen from above the water the
+    // reflection keeps y >= height - clip_offset and the refraction y <= height + clip_offset;
+    // from below (underwater_) the sides swap: the surface reflects the underwater scene (total
+    // internal reflection) and refracts the world above. The layer masks name the side an
+    // object is seen on (reflection_layers: above the water, refraction_layers: below).
     const Plane mirror{{0.0f, 1.0f, 0.0f}, -p.height};
     const Plane keep_above{{0.0f, 1.0f, 0.0f}, -(p.height - p.clip_offset)};
     const Plane keep_below{{0.0f, -1.0f, 0.0f}, p.height + p.clip_offset};
+    underwater_ = signed_distance(mirror, main.eye) < 0.0f;
+    const auto above_layers = static_cast<std::uint32_t>(p.reflection_layers);
+    const auto below_layers = static_cast<std::uint32_t>(p.refraction_layers);
     SceneView r = main;
     r.view = reflect_view(main.view, mirror);
     r.eye = reflect_point(mirror, main.eye);
-    r.layer_mask = static_cast<std::uint32_t>(p.reflection_layers);
+    r.layer_mask = underwater_ ? below_layers : above_layers;
     r.extent = {reflection_.width(), reflection_.height()};
     r.color_format = reflection_.vk_color_format();
     r.depth_format = VK_FORMAT_D32_SFLOAT;
     r.view_mask = 0;
     SceneView f = main;
-    f.layer_mask = static_cast<std::uint32_t>(p.refraction_layers);
+    f.layer_mask = underwater_ ? above_layers : below_layers;
     f.extent = r.extent;
     f.color_format = refraction_.vk_color_format();
     f.depth_format = VK_FORMAT_D32_SFLOAT;
     f.view_mask = 0;
-    clip(r, keep_above);
-    clip(f, keep_below);
+    clip(r, underwater_ ? keep_below : keep_above);
+    clip(f, underwater_ ? keep_above : keep_below);
     r.flip_front_face = needs_front_face_flip(r.view, r.proj);
     f.flip_front_face = needs_front_face_flip(f.view, f.proj);
     reflection_view_ = r;
@@ -402,6 +410,7 @@ private:
   VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
   WaterParams params_;
   std::string preset_ = "default";
+  bool underwater_ = false; ///< The eye is below the plane (this frame).
   FrameInfo info_;
   SceneView reflection_view_, refraction_view_;
   RenderTarget reflection_, refraction_;

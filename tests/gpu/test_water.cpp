@@ -392,3 +392,53 @@ TEST_CASE("water: ripples move downwind") {
     CHECK(along <= 10);
   }
 }
+
+TEST_CASE("water: from below, Snell's window - total internal reflection past the critical angle") {
+  test::GpuFixture gpu;
+  test::WaterRig rig;
+  rig.scene = test::water_test_scene();
+  rig.camera.eye = {0.0f, -1.0f, 3.0f};
+  rig.camera.target = {0.0f, 0.2f, 0.0f};
+  rig.camera.yfov = glm::radians(80.0f);
+  rig.init(gpu.ctx());
+  require_ok(rig.water->set_param("debug_view", std::string("fresnel")));
+  require_ok(rig.water->set_param("wave_height", 0.0f));
+  const Image image = rig.render(0.0f);
+  test::save_png(image, "water_snells_window");
+  // Every pixel whose ray meets the water: the rendered Fresnel term (linear target) against
+  // fresnel_dielectric for a ray leaving water (eta = 1.333) at the ray's angle to the vertical.
+  const SceneView v = rig.main_view();
+  const glm::mat4 inv = glm::inverse(v.proj * v.view);
+  const float critical = critical_angle(ior::water, 1.0f);
+  int inside = 0, outside = 0, wrong = 0;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const glm::vec2 ndc((x + 0.5f) / image.width * 2.0f - 1.0f,
+                          (y + 0.5f) / image.height * 2.0f - 1.0f);
+      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 origin = glm::vec3(a) / a.w;
+      const glm::vec3 dir = glm::normalize(glm::vec3(b) / b.w - origin);
+      if (dir.y <= 1e-3f) {
+        continue; // looking down or level: no water surface
+      }
+      const glm::vec3 p = origin + dir * (-origin.y / dir.y);
+      if (std::fabs(p.x) > 9.5f || std::fabs(p.z) > 9.5f) {
+        continue; // off the water rectangle
+      }
+      const float theta = std::acos(glm::clamp(dir.y, -1.0f, 1.0f));
+      if (std::fabs(theta - critical) < glm::radians(0.75f)) {
+        continue; // the curve is too steep at the critical angle to compare per pixel
+      }
+      const float expected = fresnel_dielectric(dir.y, ior::water);
+      const float got = image.rgba8[(std::size_t{y} * image.width + x) * 4] / 255.0f;
+      (theta < critical ? inside : outside) += 1;
+      wrong += std::fabs(got - expected) > 0.03f ? 1 : 0;
+    }
+  }
+  CAPTURE(inside);
+  CAPTURE(outside);
+  CHECK(inside > 500);  // Snell's window: the sky side, mostly transmitted
+  CHECK(outside > 500); // beyond 48.6 degrees: total internal reflection, F = 1
+  CHECK(wrong == 0);
+}

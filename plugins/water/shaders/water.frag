@@ -22,12 +22,17 @@ void main() {
   vec3 p = in_world;
   float height = -water.plane.w;
   vec2 uv = gl_FragCoord.xy * water.extent.zw; // == project_to_uv(view_proj * p, vulkan)
+  // Seen from below, the refraction pass holds the world above the water and the reflection
+  // pass the underwater scene (total internal reflection beyond the critical angle).
+  bool below = water.side.x < 0.0;
 
   // Soft shoreline: 0 where the water meets geometry, 1 from shore_softness metres of depth on.
   bool hit0;
   vec3 q0 = underwater_point(uv, hit0);
   float depth_below = hit0 ? max(height - q0.y, 0.0) : 1e4;
-  float shore = water.absorption.a > 0.0 ? smoothstep(0.0, water.absorption.a, depth_below) : 1.0;
+  float shore = water.absorption.a > 0.0 && !below
+                    ? smoothstep(0.0, water.absorption.a, depth_below)
+                    : 1.0;
 
   // Two normal-map layers scrolled along the wind at different scales hide the tiling. A
   // pattern moves with velocity w when its texture coordinate is (x - w t) / wave_length; the
@@ -51,23 +56,31 @@ void main() {
   vec2 uv_r = uv + offset;
   bool hit;
   vec3 q = underwater_point(uv_r, hit);
-  if (hit && (distance(water.eye.xyz, q) < surface_distance || q.y > height)) {
+  bool wrong_side = below ? q.y < height : q.y > height;
+  if (hit && (distance(water.eye.xyz, q) < surface_distance || wrong_side)) {
     uv_r = uv;
     q = underwater_point(uv_r, hit);
   }
   vec3 refraction = texture(refraction_tex, uv_r).rgb;
-  float thickness = hit ? distance(p, q) : 1e4;
+  // Water along the view ray: below the surface point from above, between eye and surface
+  // from below (there it also dims the reflection, applied after the blend).
+  float thickness = below ? 0.0 : (hit ? distance(p, q) : 1e4);
   vec3 transmittance = exp(-water.absorption.rgb * thickness);
   vec3 refracted = refraction * transmittance + water.water_color.rgb * (1.0 - transmittance);
 
   vec3 v = normalize(water.eye.xyz - p);
-  float cos_v = max(dot(n, v), 0.0);
+  // The normal facing the eye, and eta = n(eye side) / n(other side).
+  vec3 n_eye = below ? -n : n;
+  float eta = below ? water.side.y : water.fresnel.y;
+  float cos_v = max(dot(n_eye, v), 0.0);
   int mode = int(water.fresnel.x + 0.5);
   float f;
   if (mode == 0) {
-    f = fresnel_dielectric(cos_v, water.fresnel.y);
+    f = fresnel_dielectric(cos_v, eta); // 1 beyond the critical angle from below (Snell's window)
   } else if (mode == 1) {
-    f = fresnel_schlick(cos_v, water.fresnel.z);
+    // Schlick takes the angle in the less dense medium: the transmitted one from below.
+    float sin2_t = eta * eta * (1.0 - cos_v * cos_v);
+    f = sin2_t >= 1.0 ? 1.0 : fresnel_schlick(below ? sqrt(1.0 - sin2_t) : cos_v, water.fresnel.z);
   } else {
     f = 1.0 - cos_v; // seed 001: lerp(reflection, refraction, dot(eye, normal))
   }
@@ -75,9 +88,13 @@ void main() {
   // water depth too. The surface stays opaque, so the water never "disappears".
   f *= shore;
   vec3 color = mix(refracted, reflection, f);
+  if (below) {
+    vec3 t_eye = exp(-water.absorption.rgb * surface_distance);
+    color = color * t_eye + water.water_color.rgb * (1.0 - t_eye);
+  }
   color = mix(color, water.water_color.rgb, water.water_color.a);
   vec3 r = reflect(normalize(water.light_dir.xyz), n);
-  float spec = pow(max(dot(r, v), 0.0), water.light_color.a) * water.light_dir.w * shore;
+  float spec = below ? 0.0 : pow(max(dot(r, v), 0.0), water.light_color.a) * water.light_dir.w * shore;
   color += water.light_color.rgb * spec;
 
   int view = int(water.fresnel.w + 0.5);

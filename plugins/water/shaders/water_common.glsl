@@ -16,6 +16,7 @@ layout(set = 0, binding = 0) uniform WaterBlock {
   vec4 light_color;        // rgb, a specular_power
   vec4 fresnel;            // x mode (0 exact, 1 schlick, 2 seed), y eta = 1/ior, z f0, w debug view
   vec4 extent;             // xy output size in pixels, zw 1/size
+  vec4 side;               // x +1 eye above the water, -1 below; y ior
 } water;
 
 layout(set = 0, binding = 1) uniform sampler2D reflection_tex;

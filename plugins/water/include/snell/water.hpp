@@ -82,9 +82,12 @@ struct WaterParams {
   /// so the refracted ground meets the real ground without a seam. The surface stays opaque.
   /// 0 = hard edge. Default 0.15 m. [0, 100].
   float shore_softness = 0.15f;
-  /// Objects drawn in the reflection (snell::layer bits). Default layer::reflected.
+  /// Objects seen on the water's upper side (snell::layer bits): drawn in the reflection seen
+  /// from above, in the refraction seen from below. Default layer::reflected.
   int reflection_layers = static_cast<int>(layer::reflected);
-  /// Objects drawn in the refraction (snell::layer bits). Default layer::refracted.
+  /// Objects seen on the water's lower side (snell::layer bits): drawn in the refraction seen
+  /// from above, in the (totally internal) reflection seen from below. Default
+  /// layer::refracted.
   int refraction_layers = static_cast<int>(layer::refracted);
   /// What the surface shows. Default final.
   WaterDebugView debug_view = WaterDebugView::final;
@@ -101,9 +104,11 @@ struct WaterParams {
 
 /// The water effect. Create it through the registry (`create("water", info)`) or directly with
 /// create_water; cast to WaterEffect for the typed API. Its per-frame uniforms live in a ring
-/// of 3 slots: a host may have at most 3 frames in flight per water effect. A camera on or
-/// below the plane cannot use an oblique near plane; the passes then clip with
-/// gl_ClipDistance whatever clip_mode says.
+/// of 3 slots: a host may have at most 3 frames in flight per water effect. A camera exactly
+/// on the plane cannot use an oblique near plane; the passes then clip with gl_ClipDistance
+/// whatever clip_mode says. From below the plane the passes swap sides: the surface shows
+/// total internal reflection of the underwater scene and, inside Snell's window, the world
+/// above (docs/water.md, "From under the water").
 class WaterEffect : public Effect {
 public:
   /// The typed parameters (validated as a whole; nothing is changed on error).
