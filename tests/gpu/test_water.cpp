@@ -442,3 +442,59 @@ TEST_CASE("water: from below, Snell's window - total internal reflection past th
   CHECK(outside > 500); // beyond 48.6 degrees: total internal reflection, F = 1
   CHECK(wrong == 0);
 }
+
+TEST_CASE("water: distorted refraction never shows what is in front of the surface point") {
+  // A red box just under the surface near a low camera, and strong ripples. A far surface
+  // point whose distorted sample lands on the (nearer) box must fall back to its undistorted
+  // sample, so red may only appear where the surface point is not farther than the box.
+  test::GpuFixture gpu;
+  test::WaterRig rig;
+  rig.scene = test::water_test_scene();
+  const glm::vec3 box_center(0.0f, -0.35f, 2.0f);
+  const glm::vec3 half(0.6f, 0.3f, 0.6f);
+  test::add_object(rig.scene,
+                   test::make_box_mesh(half, test::add_emissive_material(rig.scene, kMarkerAbove)),
+                   box_center, layer::all & ~layer::reflected);
+  rig.camera.eye = {0.0f, 1.2f, 5.0f};
+  rig.camera.target = {0.0f, -0.3f, -2.0f};
+  rig.init(gpu.ctx());
+  require_ok(rig.water->set_param("debug_view", std::string("refraction")));
+  require_ok(rig.water->set_param("wave_height", 2.0f));
+  require_ok(rig.water->set_param("distortion", 0.3f));
+  require_ok(rig.water->set_param("resolution_scale", 1.0f));
+  const Image image = rig.render(0.0f);
+  test::save_png(image, "water_no_leak_in_front");
+  float box_far = 0.0f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner =
+        box_center + half * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    box_far = std::max(box_far, glm::distance(rig.camera.eye, corner));
+  }
+  const SceneView v = rig.main_view();
+  const glm::mat4 inv = glm::inverse(v.proj * v.view);
+  int red = 0, leaked = 0;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const std::uint8_t* px = &image.rgba8[(std::size_t{y} * image.width + x) * 4];
+      if (!(px[0] > 150 && px[1] < 60 && px[2] < 60)) {
+        continue;
+      }
+      ++red;
+      const glm::vec2 ndc((x + 0.5f) / image.width * 2.0f - 1.0f,
+                          (y + 0.5f) / image.height * 2.0f - 1.0f);
+      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 origin = glm::vec3(a) / a.w;
+      const glm::vec3 dir = glm::normalize(glm::vec3(b) / b.w - origin);
+      if (dir.y >= 0.0f) {
+        continue;
+      }
+      const glm::vec3 p = origin + dir * (-origin.y / dir.y);
+      leaked += glm::distance(rig.camera.eye, p) > box_far + 0.05f ? 1 : 0;
+    }
+  }
+  CAPTURE(red);
+  CAPTURE(leaked);
+  CHECK(red > 500);
+  CHECK(leaked == 0);
+}
