@@ -27,6 +27,9 @@ for scene in pool window spheres; do
   echo "=== render $scene -> out/$scene.png ==="
   "$build_dir/samples/cli/snell" render --scene "$scene" --size 1280x720 --out "$out_dir/$scene.png"
 done
+echo "=== render pool with water -> out/pool_water.png ==="
+"$build_dir/samples/cli/snell" render --scene pool --effect water --size 1280x720 \
+  --out "$out_dir/pool_water.png"
 echo "=== render samples/assets/courtyard.gltf -> out/courtyard.png ==="
 "$build_dir/samples/cli/snell" render --scene samples/assets/courtyard.gltf --size 1280x720 \
   --out "$out_dir/courtyard.png"
