@@ -18,6 +18,17 @@ vec3 underwater_point(vec2 uv, out bool hit) {
   return p.xyz / p.w;
 }
 
+// The nearest of the four depth texels the bilinear colour lookup at `uv` blends: along one
+// ray the projected depth grows with distance (also for an oblique projection), so the
+// smallest depth is the nearest point any of the four texels shows.
+vec3 nearest_point_in_footprint(vec2 uv, out bool hit) {
+  vec4 d4 = textureGather(refraction_depth, uv, 0);
+  float d = min(min(d4.x, d4.y), min(d4.z, d4.w));
+  hit = d < 1.0;
+  vec4 p = water.refraction_inv_vp * vec4(uv * 2.0 - 1.0, d, 1.0);
+  return p.xyz / p.w;
+}
+
 void main() {
   vec3 p = in_world;
   float height = -water.plane.w;
@@ -51,16 +62,18 @@ void main() {
   vec3 reflection = texture(reflection_tex, uv + offset).rgb;
 
   // Refraction: a distorted sample that lands on something in front of the water (nearer the
-  // eye than this surface point) falls back to the undistorted one.
+  // eye than this surface point) falls back to the undistorted one. The test covers all four
+  // texels the bilinear lookup blends, so an edge texel cannot bleed in either.
   float surface_distance = distance(water.eye.xyz, p);
   vec2 uv_r = uv + offset;
+  bool near_hit;
+  vec3 near_q = nearest_point_in_footprint(uv_r, near_hit);
+  bool wrong_side = below ? near_q.y < height : near_q.y > height;
+  if (near_hit && (distance(water.eye.xyz, near_q) < surface_distance || wrong_side)) {
+    uv_r = uv;
+  }
   bool hit;
   vec3 q = underwater_point(uv_r, hit);
-  bool wrong_side = below ? q.y < height : q.y > height;
-  if (hit && (distance(water.eye.xyz, q) < surface_distance || wrong_side)) {
-    uv_r = uv;
-    q = underwater_point(uv_r, hit);
-  }
   vec3 refraction = texture(refraction_tex, uv_r).rgb;
   // Water along the view ray: below the surface point from above, between eye and surface
   // from below (there it also dims the reflection, applied after the blend).
