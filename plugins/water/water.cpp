@@ -12,6 +12,7 @@
 
 #include <glm/matrix.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -165,7 +166,11 @@ public:
     if (info_.timer != nullptr) {
       info_.timer->begin(cmd, "water.reflection");
     }
+    // Both passes only render the screen rectangle the surface can sample (the water's
+    // projected bounds plus the largest ripple offset): on lavapipe this skips most of the fill.
+    const VkRect2D scissor = sampled_rect();
     reflection_.begin_rendering(cmd, clear);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
     scene.draw_scene(cmd, reflection_view_);
     reflection_.end_rendering(cmd);
     if (info_.timer != nullptr) {
@@ -173,6 +178,7 @@ public:
       info_.timer->begin(cmd, "water.refraction");
     }
     refraction_.begin_rendering(cmd, clear);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
     scene.draw_scene(cmd, refraction_view_);
     refraction_.end_rendering(cmd);
     if (info_.timer != nullptr) {
@@ -290,6 +296,42 @@ private:
     f.flip_front_face = needs_front_face_flip(f.view, f.proj);
     reflection_view_ = r;
     refraction_view_ = f;
+  }
+
+  /// The texels of the targets the surface shader can read: the projected water rectangle,
+  /// widened by the largest lookup offset (|slope| <= 2 sqrt(2) wave_height, times distortion)
+  /// and two texels for the bilinear and gather footprints. The whole target when a corner is
+  /// behind the eye (the projection of the rectangle is then unbounded).
+  [[nodiscard]] VkRect2D sampled_rect() const {
+    const VkRect2D full{{0, 0}, {reflection_.width(), reflection_.height()}};
+    const WaterParams& p = params_;
+    const glm::mat4 vp = info_.main_view.proj * info_.main_view.view;
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (int i = 0; i < 4; ++i) {
+      const glm::vec2 corner =
+          p.center + 0.5f * p.size * glm::vec2(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f);
+      const glm::vec4 clip = vp * glm::vec4(corner.x, p.height, corner.y, 1.0f);
+      if (!(clip.w > 1e-4f)) {
+        return full;
+      }
+      const glm::vec2 uv = project_to_uv(clip, ClipConvention::vulkan);
+      lo = glm::min(lo, uv);
+      hi = glm::max(hi, uv);
+    }
+    const glm::vec2 size(static_cast<float>(full.extent.width),
+                         static_cast<float>(full.extent.height));
+    const glm::vec2 margin = glm::vec2(2.83f * p.wave_height * p.distortion) + 2.0f / size;
+    lo = glm::clamp(lo - margin, glm::vec2(0.0f), glm::vec2(1.0f)) * size;
+    hi = glm::clamp(hi + margin, glm::vec2(0.0f), glm::vec2(1.0f)) * size;
+    const auto x0 = static_cast<std::int32_t>(std::floor(lo.x));
+    const auto y0 = static_cast<std::int32_t>(std::floor(lo.y));
+    const auto x1 = static_cast<std::uint32_t>(std::ceil(hi.x));
+    const auto y1 = static_cast<std::uint32_t>(std::ceil(hi.y));
+    if (x1 <= static_cast<std::uint32_t>(x0) || y1 <= static_cast<std::uint32_t>(y0)) {
+      return VkRect2D{{0, 0}, {1, 1}}; // the water is off screen: render (almost) nothing
+    }
+    return VkRect2D{{x0, y0},
+                    {x1 - static_cast<std::uint32_t>(x0), y1 - static_cast<std::uint32_t>(y0)}};
   }
 
   /// Oblique near plane when possible (the eye strictly on the clipped side), else clip
