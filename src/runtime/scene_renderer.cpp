@@ -366,7 +366,9 @@ void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
   // Per-view block into the next ring slot.
   ViewBlock block{};
   const bool multi = view.view_mask != 0;
-  for (int i = 0; i < 6; ++i) {
+  // Only the views a pass uses are filled: one, or six for a multiview cube capture.
+  const int views = multi ? 6 : 1;
+  for (int i = 0; i < views; ++i) {
     const glm::mat4 vp =
         multi ? view.multiview_view_proj[static_cast<std::size_t>(i)] : view.proj * view.view;
     block.view_proj[i] = vp;
