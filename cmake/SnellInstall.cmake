@@ -19,6 +19,15 @@ set(_snell_install_targets snell_math)
 if(TARGET snell_runtime)
   list(APPEND _snell_install_targets snell_scene snell_runtime)
 endif()
+# Plugins: every plugin library, snell::effects (register_builtin_effects) and their headers.
+if(TARGET snell_effects)
+  list(APPEND _snell_install_targets ${SNELL_PLUGIN_TARGETS} snell_effects)
+  file(GLOB _snell_plugin_includes LIST_DIRECTORIES true "${PROJECT_SOURCE_DIR}/plugins/*/include")
+  foreach(_dir IN LISTS _snell_plugin_includes)
+    install(DIRECTORY "${_dir}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
+            FILES_MATCHING PATTERN "*.hpp")
+  endforeach()
+endif()
 install(TARGETS ${_snell_install_targets}
         EXPORT snellTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
