@@ -25,6 +25,7 @@ PACKAGES=(
   clang
   clang-format
   libclang-rt-14-dev
+  python3
 )
 
 missing=()
