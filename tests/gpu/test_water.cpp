@@ -100,11 +100,8 @@ TEST_CASE("water: schema defaults are WaterParams' defaults (pinned)") {
 
 TEST_CASE("water: set_param errors name the key, value and range, and nothing is clamped") {
   test::GpuFixture gpu;
-  EffectCreateInfo info;
-  info.context = &gpu.ctx();
-  auto created = create_water(info);
-  REQUIRE(created.has_value());
-  WaterEffect& w = **created;
+  const auto water = test::bare_water(gpu.ctx());
+  WaterEffect& w = *water;
   auto unknown = w.set_param("wave_hieght", 1.0f);
   REQUIRE_FALSE(unknown.has_value());
   CHECK(unknown.error().message.find("wave_hieght") != std::string::npos);
@@ -145,11 +142,8 @@ TEST_CASE("water: set_param errors name the key, value and range, and nothing is
 
 TEST_CASE("water: normal_map loads a file, and a missing one is an error naming it") {
   test::GpuFixture gpu;
-  EffectCreateInfo info;
-  info.context = &gpu.ctx();
-  auto created = create_water(info);
-  REQUIRE(created.has_value());
-  WaterEffect& w = **created;
+  const auto water = test::bare_water(gpu.ctx());
+  WaterEffect& w = *water;
   auto missing = w.set_param("normal_map", std::string("/nonexistent/ripples.png"));
   REQUIRE_FALSE(missing.has_value());
   CHECK(missing.error().message.find("/nonexistent/ripples.png") != std::string::npos);
@@ -408,17 +402,11 @@ TEST_CASE("water: from below, Snell's window - total internal reflection past th
   // Every pixel whose ray meets the water: the rendered Fresnel term (linear target) against
   // fresnel_dielectric for a ray leaving water (eta = 1.333) at the ray's angle to the vertical.
   const SceneView v = rig.main_view();
-  const glm::mat4 inv = glm::inverse(v.proj * v.view);
   const float critical = critical_angle(ior::water, 1.0f);
   int inside = 0, outside = 0, wrong = 0;
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
-      const glm::vec2 ndc((x + 0.5f) / image.width * 2.0f - 1.0f,
-                          (y + 0.5f) / image.height * 2.0f - 1.0f);
-      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
-      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 origin = glm::vec3(a) / a.w;
-      const glm::vec3 dir = glm::normalize(glm::vec3(b) / b.w - origin);
+      const auto [origin, dir] = test::pixel_ray(v, x, y, image.width, image.height);
       if (dir.y <= 1e-3f) {
         continue; // looking down or level: no water surface
       }
@@ -471,7 +459,6 @@ TEST_CASE("water: distorted refraction never shows what is in front of the surfa
     box_far = std::max(box_far, glm::distance(rig.camera.eye, corner));
   }
   const SceneView v = rig.main_view();
-  const glm::mat4 inv = glm::inverse(v.proj * v.view);
   int red = 0, leaked = 0;
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
@@ -480,12 +467,7 @@ TEST_CASE("water: distorted refraction never shows what is in front of the surfa
         continue;
       }
       ++red;
-      const glm::vec2 ndc((x + 0.5f) / image.width * 2.0f - 1.0f,
-                          (y + 0.5f) / image.height * 2.0f - 1.0f);
-      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
-      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 origin = glm::vec3(a) / a.w;
-      const glm::vec3 dir = glm::normalize(glm::vec3(b) / b.w - origin);
+      const auto [origin, dir] = test::pixel_ray(v, x, y, image.width, image.height);
       if (dir.y >= 0.0f) {
         continue;
       }

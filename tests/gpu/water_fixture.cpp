@@ -44,6 +44,27 @@ Image WaterRig::render(float time, bool with_water) {
   return *image;
 }
 
+std::unique_ptr<WaterEffect> bare_water(Context& ctx) {
+  EffectCreateInfo info;
+  info.context = &ctx;
+  auto created = create_water(info);
+  REQUIRE_MESSAGE(created.has_value(), created.error().message);
+  return std::move(*created);
+}
+
+PixelRay pixel_ray(const SceneView& view, std::uint32_t x, std::uint32_t y, std::uint32_t width,
+                   std::uint32_t height) {
+  const glm::mat4 inv = glm::inverse(view.proj * view.view);
+  const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(width) * 2.0f - 1.0f,
+                      (static_cast<float>(y) + 0.5f) / static_cast<float>(height) * 2.0f - 1.0f);
+  const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
+  const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+  PixelRay ray;
+  ray.origin = glm::vec3(a) / a.w;
+  ray.dir = glm::normalize(glm::vec3(b) / b.w - ray.origin);
+  return ray;
+}
+
 SceneView WaterRig::main_view() const {
   return make_main_view(camera, width, height);
 }

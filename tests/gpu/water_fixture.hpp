@@ -29,4 +29,15 @@ struct WaterRig {
 /// A dark scene: water at y = 0 over 20 x 20 m, a grey floor at y = -2, sky black.
 Scene water_test_scene();
 
+/// A water effect with default parameters and no scene (for parameter tests).
+std::unique_ptr<WaterEffect> bare_water(Context& ctx);
+
+/// The world ray through the centre of pixel (x, y) (rows top first) of a width x height view.
+struct PixelRay {
+  glm::vec3 origin{0.0f};
+  glm::vec3 dir{0.0f}; ///< Unit.
+};
+PixelRay pixel_ray(const SceneView& view, std::uint32_t x, std::uint32_t y, std::uint32_t width,
+                   std::uint32_t height);
+
 } // namespace snell::test
