@@ -215,7 +215,7 @@ public:
     const VkExtent2D e = info.main_view.extent;
     b.extent =
         glm::vec4(float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height));
-    b.side = glm::vec4(underwater_ ? -1.0f : 1.0f, p.ior, 0.0f, 0.0f);
+    b.side = glm::vec4(underwater_ ? -1.0f : 1.0f, p.ior, p.reflectance, 0.0f);
     const std::uint32_t slot = slot_;
     slot_ = (slot_ + 1) % kSlots;
     std::memcpy(static_cast<char*>(ubo_.mapped()) + stride_ * slot, &b, sizeof(b));

@@ -8,7 +8,7 @@ namespace snell {
 namespace {
 
 constexpr std::array<const char*, 2> kClipModes = {"oblique", "clip_distance"};
-constexpr std::array<const char*, 3> kFresnel = {"exact", "schlick", "seed"};
+constexpr std::array<const char*, 4> kFresnel = {"exact", "schlick", "seed", "constant"};
 constexpr std::array<const char*, 5> kDebugViews = {"final", "reflection", "refraction", "normals",
                                                     "fresnel"};
 
@@ -68,8 +68,11 @@ ParamSchema build_schema() {
        "Direction (x, z) the ripples scroll, normalised internally");
   num("wind_force", d.wind_force, 0.0f, 100.0f, "m/s", "Scroll speed of the ripples");
   enumeration("fresnel", kFresnel[static_cast<int>(d.fresnel)], choices(kFresnel),
-              "Fresnel term: exact dielectric, Schlick, or seed 001's 1 - dot(eye, normal)");
+              "Fresnel term: exact dielectric, Schlick, seed 001's 1 - dot(eye, normal), or "
+              "constant (reflectance)");
   num("ior", d.ior, 1.0f, 3.0f, "", "Index of refraction of the water (air above: 1)");
+  num("reflectance", d.reflectance, 0.0f, 1.0f, "",
+      "Reflection weight for fresnel=constant (seed 000: 0.4)");
   color("water_color", d.water_color, "Colour of the water body (linear RGB)");
   num("color_blend", d.color_blend, 0.0f, 1.0f, "", "Blend toward water_color (seed 001: 0.2)");
   num("specular_power", d.specular_power, 1.0f, 4096.0f, "", "Exponent of the sun highlight");
@@ -117,7 +120,8 @@ WaterParams water_seed_preset(const WaterParams& base) {
   p.resolution_scale = 1.0f;
   p.clip_offset = 0.1f;
   p.distortion = 0.01f;
-  p.fresnel = WaterFresnel::seed;
+  p.fresnel = WaterFresnel::constant;
+  p.reflectance = 0.4f;
   p.water_color = glm::vec3(0.3f, 0.3f, 0.5f);
   p.color_blend = 0.2f;
   p.specular_power = 256.0f;
@@ -176,6 +180,8 @@ Result<void> apply_water_param(WaterParams& p, std::string_view key, const Param
     p.fresnel = static_cast<WaterFresnel>(index_of(kFresnel, s()));
   } else if (key == "ior") {
     p.ior = f();
+  } else if (key == "reflectance") {
+    p.reflectance = f();
   } else if (key == "water_color") {
     p.water_color = v3();
   } else if (key == "color_blend") {
@@ -235,6 +241,8 @@ Result<ParamValue> read_water_param(const WaterParams& p, std::string_view key) 
     return ParamValue{std::string(kFresnel[static_cast<int>(p.fresnel)])};
   if (key == "ior")
     return ParamValue{p.ior};
+  if (key == "reflectance")
+    return ParamValue{p.reflectance};
   if (key == "water_color")
     return ParamValue{p.water_color};
   if (key == "color_blend")

@@ -65,7 +65,7 @@ expect_exit(2 render --effect water --set water.center=1 --out x.png)
 # snell list prints every parameter of every effect.
 expect_exit(0 list)
 foreach(key preset height center size resolution_scale clip_mode clip_offset wave_length
-        wave_height distortion wind_direction wind_force fresnel ior water_color color_blend
+        wave_height distortion wind_direction wind_force fresnel ior reflectance water_color color_blend
         specular_power specular_intensity absorption shore_softness reflection_layers
         refraction_layers debug_view normal_map)
   string(FIND "${last_out}" "  ${key} " found)

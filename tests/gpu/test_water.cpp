@@ -71,7 +71,7 @@ TEST_CASE("water: schema defaults are WaterParams' defaults (pinned)") {
   auto water = create_water(info);
   REQUIRE(water.has_value());
   const ParamSchema& schema = water_schema();
-  CHECK(schema.params.size() == 24);
+  CHECK(schema.params.size() == 25);
   for (const ParamSpec& spec : schema.params) {
     CAPTURE(spec.name);
     CHECK_FALSE(spec.doc.empty());
@@ -93,7 +93,8 @@ TEST_CASE("water: schema defaults are WaterParams' defaults (pinned)") {
   // The seed preset (seeds 000/001).
   const WaterParams seed = water_seed_preset();
   CHECK(seed.resolution_scale == 1.0f);
-  CHECK(seed.fresnel == WaterFresnel::seed);
+  CHECK(seed.fresnel == WaterFresnel::constant);
+  CHECK(seed.reflectance == doctest::Approx(0.4f));
   CHECK(seed.color_blend == doctest::Approx(0.2f));
   CHECK(seed.water_color == glm::vec3(0.3f, 0.3f, 0.5f));
 }
@@ -127,7 +128,7 @@ TEST_CASE("water: set_param errors name the key, value and range, and nothing is
   require_ok(w.set_param("wave_height", 0.0f));
   CHECK(w.params().wave_height == 0.0f);
   require_ok(w.set_param("preset", std::string("seed")));
-  CHECK(w.params().fresnel == WaterFresnel::seed);
+  CHECK(w.params().fresnel == WaterFresnel::constant);
   WaterParams bad = w.params();
   bad.size = glm::vec2(0.0f, 1.0f);
   CHECK_FALSE(w.set_params(bad).has_value());

@@ -94,8 +94,10 @@ void main() {
     // Schlick takes the angle in the less dense medium: the transmitted one from below.
     float sin2_t = eta * eta * (1.0 - cos_v * cos_v);
     f = sin2_t >= 1.0 ? 1.0 : fresnel_schlick(below ? sqrt(1.0 - sin2_t) : cos_v, water.fresnel.z);
-  } else {
+  } else if (mode == 2) {
     f = 1.0 - cos_v; // seed 001: lerp(reflection, refraction, dot(eye, normal))
+  } else {
+    f = water.side.z; // seed 000: lerp(reflection, refraction, 0.6), i.e. a constant 0.4
   }
   // A thin film over uneven ground does not mirror: reflection and highlight fade in with the
   // water depth too. The surface stays opaque, so the water never "disappears".

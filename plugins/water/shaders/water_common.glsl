@@ -14,9 +14,9 @@ layout(set = 0, binding = 0) uniform WaterBlock {
   vec4 absorption;         // rgb 1/m, a shore_softness
   vec4 light_dir;          // xyz direction the light travels, w specular_intensity
   vec4 light_color;        // rgb, a specular_power
-  vec4 fresnel;            // x mode (0 exact, 1 schlick, 2 seed), y eta = 1/ior, z f0, w debug view
+  vec4 fresnel;            // x mode (0 exact, 1 schlick, 2 seed, 3 constant), y 1/ior, z f0, w debug
   vec4 extent;             // xy output size in pixels, zw 1/size
-  vec4 side;               // x +1 eye above the water, -1 below; y ior
+  vec4 side;               // x +1 eye above the water, -1 below; y ior; z reflectance
 } water;
 
 layout(set = 0, binding = 1) uniform sampler2D reflection_tex;

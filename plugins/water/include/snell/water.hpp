@@ -21,9 +21,10 @@ enum class WaterClipMode : std::uint8_t {
 
 /// Which Fresnel term blends reflection over refraction.
 enum class WaterFresnel : std::uint8_t {
-  exact,   ///< Exact unpolarised dielectric Fresnel with `ior` (default).
-  schlick, ///< Schlick's approximation with f0 from `ior`.
-  seed,    ///< Seed 001's `1 - dot(eye, normal)` (not physical; for comparison).
+  exact,    ///< Exact unpolarised dielectric Fresnel with `ior` (default).
+  schlick,  ///< Schlick's approximation with f0 from `ior`.
+  seed,     ///< Seed 001's `1 - dot(eye, normal)` (not physical; for comparison).
+  constant, ///< A fixed reflection weight `reflectance` (seed 000's lerp(..., 0.6)).
 };
 
 /// What the water surface shows.
@@ -65,6 +66,9 @@ struct WaterParams {
   WaterFresnel fresnel = WaterFresnel::exact;
   /// Index of refraction of the water (the eye is in air, n = 1). Default 1.333. [1, 3].
   float ior = 1.333f;
+  /// Reflection weight when fresnel == constant: colour = mix(refraction, reflection,
+  /// reflectance). Default 0.4 (seed 000's lerp(reflection, refraction, 0.6)). [0, 1].
+  float reflectance = 0.4f;
   /// Colour of the water body, linear RGB: what fully absorbed light becomes (in-scattering),
   /// and the seed's "dull colour". Default (0.02, 0.12, 0.14). Each [0, 1].
   glm::vec3 water_color{0.02f, 0.12f, 0.14f};
@@ -98,8 +102,9 @@ struct WaterParams {
 };
 
 /// The `seed` preset: seeds 000/001 for side-by-side comparison: full-resolution targets,
-/// seed Fresnel, dull colour (0.3, 0.3, 0.5) blended 0.2, pow-256 specular, distortion 0.01,
-/// clip offset 0.1, no absorption and no soft shoreline.
+/// seed 000's constant blend lerp(reflection, refraction, 0.6) (fresnel = constant,
+/// reflectance 0.4), seed 001's dull colour (0.3, 0.3, 0.5) blended 0.2 and pow-256 specular,
+/// distortion 0.01, clip offset 0.1, no absorption and no soft shoreline.
 [[nodiscard]] WaterParams water_seed_preset(const WaterParams& base = {});
 
 /// The water effect. Create it through the registry (`create("water", info)`) or directly with
