@@ -1,5 +1,6 @@
 # Drives the snell CLI: bad arguments exit 2 with one line naming the argument; each built-in
 # scene renders to a PNG of the requested size with validation on and no validation error.
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake/expect_png.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
@@ -78,22 +79,12 @@ endforeach()
 foreach(scene pool window spheres)
   set(png "${WORK_DIR}/${scene}.png")
   expect_exit(0 render --scene ${scene} --size 160x90 --out ${png} --validation --debug-targets)
-  file(READ "${png}" header LIMIT 24 HEX)
-  # PNG signature, then the IHDR chunk: width and height as big-endian 32-bit at offset 16.
-  string(SUBSTRING "${header}" 0 16 signature)
-  string(SUBSTRING "${header}" 32 8 width)
-  string(SUBSTRING "${header}" 40 8 height)
-  if(NOT signature STREQUAL "89504e470d0a1a0a" OR NOT width STREQUAL "000000a0"
-     OR NOT height STREQUAL "0000005a")
-    message(FATAL_ERROR "${png}: not a 160x90 PNG (header ${header})")
-  endif()
+  expect_png("${png}" 160 90)
 endforeach()
 # The sample glTF asset (hierarchy, negative scale, generated normals, camera, light) renders.
 expect_exit(0 render --scene "${ASSET_DIR}/courtyard.gltf" --size 160x90
             --out "${WORK_DIR}/courtyard.png" --validation)
-if(NOT EXISTS "${WORK_DIR}/courtyard.png")
-  message(FATAL_ERROR "courtyard.gltf rendered no PNG")
-endif()
+expect_png("${WORK_DIR}/courtyard.png" 160 90)
 # Water on a glTF scene, placed with --set; and the bench JSON.
 expect_exit(0 render --scene "${ASSET_DIR}/courtyard.gltf" --effect water --set water.height=0.05
             --set water.center=0,0 --set water.size=6,6 --size 160x90

@@ -1,6 +1,7 @@
 # Drives snell-embed-host: bad arguments exit 2 with one line on stderr; a render with
 # validation and --check (the water changes the pixel where its centre projects, the sky stays
 # unchanged) exits 0 and writes a PNG of the requested size.
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake/expect_png.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
@@ -42,16 +43,5 @@ string(FIND "${last_out}" "check: passed" passed)
 if(passed EQUAL -1)
   message(FATAL_ERROR "--check did not report 'check: passed':\n${last_out}")
 endif()
-if(NOT EXISTS "${png}")
-  message(FATAL_ERROR "no PNG written at ${png}")
-endif()
-file(READ "${png}" header LIMIT 24 HEX)
-# PNG signature, then the IHDR chunk: width and height as big-endian 32-bit at offset 16.
-string(SUBSTRING "${header}" 0 16 signature)
-string(SUBSTRING "${header}" 32 8 width)
-string(SUBSTRING "${header}" 40 8 height)
-if(NOT signature STREQUAL "89504e470d0a1a0a" OR NOT width STREQUAL "00000140"
-   OR NOT height STREQUAL "000000b4")
-  message(FATAL_ERROR "${png}: not a 320x180 PNG (header ${header})")
-endif()
+expect_png("${png}" 320 180)
 message(STATUS "snell-embed-host: arguments, render, check and PNG OK")

@@ -1,0 +1,16 @@
+# expect_png(<file> <width> <height>): fails unless <file> is a PNG of that size (read from the
+# signature and the IHDR chunk: width and height as big-endian 32-bit at offset 16).
+function(expect_png file width height)
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "no PNG written at ${file}")
+  endif()
+  file(READ "${file}" header LIMIT 24 HEX)
+  string(SUBSTRING "${header}" 0 16 signature)
+  string(SUBSTRING "${header}" 32 8 w_hex)
+  string(SUBSTRING "${header}" 40 8 h_hex)
+  math(EXPR w "0x${w_hex}")
+  math(EXPR h "0x${h_hex}")
+  if(NOT signature STREQUAL "89504e470d0a1a0a" OR NOT w EQUAL width OR NOT h EQUAL height)
+    message(FATAL_ERROR "${file}: not a ${width}x${height} PNG (header ${header})")
+  endif()
+endfunction()
