@@ -7,7 +7,7 @@ layout(push_constant) uniform Rect {
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;
 void main() {
-  vec4 c = textureLod(source, in_uv, 0.0);
+  vec4 c = textureLod(source, in_uv, pc.params.y); // y: the mip level shown
   if (pc.params.x > 0.5) {
     c = vec4(vec3(pow(c.r, 32.0)), 1.0); // depth: stretch the near range into view
   }

@@ -54,6 +54,16 @@ struct AdoptInfo {
   const void* enabled_features = nullptr;
 };
 
+/// The samplers every effect shares: created with the Context, destroyed with it.
+enum class StandardSampler : std::uint8_t {
+  linear_clamp,  ///< Bilinear within a level, linear between levels, clamp to edge: targets,
+                 ///< snapshots, anything sampled by projection.
+  linear_repeat, ///< Trilinear, repeat: tiling textures such as normal maps.
+  nearest_clamp, ///< Nearest texel, level 0 only, clamp to edge: depth images, exact reads.
+};
+/// Number of StandardSampler values.
+inline constexpr std::uint32_t kStandardSamplerCount = 3;
+
 /// Owns (or borrows) the instance, device and queue that every Snell object uses.
 /// Move-only. Every resource created from a Context must be destroyed before it.
 class Context {
@@ -79,6 +89,10 @@ public:
   [[nodiscard]] VkQueue queue() const;
   [[nodiscard]] std::uint32_t queue_family() const;
   [[nodiscard]] const DeviceInfo& device_info() const;
+  /// The physical device's limits (minUniformBufferOffsetAlignment, maxImageDimension2D, ...).
+  [[nodiscard]] const VkPhysicalDeviceLimits& limits() const;
+  /// One of the shared samplers (never VK_NULL_HANDLE on a valid context).
+  [[nodiscard]] VkSampler sampler(StandardSampler which) const;
   /// True when this context owns the instance and device (created, not adopted).
   [[nodiscard]] bool owns_device() const;
 

@@ -1,21 +1,23 @@
-// Snell plugins: the Effect interface, data-driven parameters with schemas, and the registry
-// through which a host creates effects (DESIGN.md, "Plugins"). No globals, no static
-// self-registration: the host owns an EffectRegistry and calls register_builtin_effects on it.
+// Snell plugins, the host-facing API: the Effect interface, data-driven parameters with schemas,
+// and the registry through which a host creates effects (DESIGN.md, "Plugins"). No globals, no
+// static self-registration: the host owns an EffectRegistry and calls register_builtin_effects
+// on it. C++17; it includes neither the scene model nor the plugin-authoring toolkit (those are
+// snell/scene.hpp and snell/plugin.hpp).
 #pragma once
 
-#include <snell/context.hpp>
-#include <snell/gpu_timer.hpp>
-#include <snell/scene.hpp>
+#include <snell/result.hpp>
 #include <snell/scene_source.hpp>
+#include <snell/scene_types.hpp>
+#include <snell/span.hpp>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
-#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -23,15 +25,32 @@
 
 namespace snell {
 
-/// An image an effect exposes for debugging (thumbnails, tests).
+class Context;
+class GpuTimer;
+class SceneSnapshot;
+struct Scene;
+
+/// What a DebugTarget shows.
+enum class DebugKind : std::uint8_t {
+  color,     ///< Level 0 of a colour image.
+  depth,     ///< A depth image (shown with a contrast curve).
+  cube_face, ///< One face (`layer`) of a cube image.
+  mip_level, ///< One mip level (`mip`) of a colour image.
+};
+
+/// An image an effect exposes for debugging (overlay thumbnails, tests).
 struct DebugTarget {
-  std::string name;                  ///< "water.reflection", "depth", ...
-  VkImageView view = VK_NULL_HANDLE; ///< 2D view, SHADER_READ_ONLY_OPTIMAL after the passes.
-  bool depth = false;                ///< A depth image (visualised with a contrast curve).
-  VkImage image = VK_NULL_HANDLE;    ///< The image itself (for readback in tests), if any.
-  std::uint32_t width = 0;           ///< Size of level 0 in pixels.
-  std::uint32_t height = 0;
+  std::string name;                  ///< "water.reflection", "probe.face+x", ...
+  DebugKind kind = DebugKind::color; ///< What `view` shows. Default color.
+  /// A 2D view of exactly the level and layer shown, in SHADER_READ_ONLY_OPTIMAL whenever
+  /// debug_targets() may be read (toolkit targets are, from creation on).
+  VkImageView view = VK_NULL_HANDLE;
+  VkImage image = VK_NULL_HANDLE;        ///< The image itself (for readback in tests), if any.
+  std::uint32_t width = 0;               ///< Width of the level shown, pixels.
+  std::uint32_t height = 0;              ///< Height of the level shown, pixels.
   VkFormat format = VK_FORMAT_UNDEFINED; ///< Format of `image` (for readback).
+  std::uint32_t layer = 0;               ///< Array layer / cube face shown. Default 0.
+  std::uint32_t mip = 0;                 ///< Mip level shown. Default 0.
 };
 
 /// Types a parameter can have.
@@ -86,48 +105,78 @@ struct ParamSchema {
 [[nodiscard]] Result<ParamValue> parse_param(const ParamSchema& schema, const ParamSpec& spec,
                                              std::string_view text);
 
-/// Per-frame information the host hands to every effect before recording.
+/// Per-frame information the host hands to every effect (update, record_passes, record_draw).
 struct FrameInfo {
-  float time = 0.0f;         ///< Seconds since the start (animation). Default 0.
+  float time = 0.0f; ///< Seconds since the start (animation). Default 0.
+  /// The host's frame counter: +1 per frame, never reused. Resources an effect replaces while
+  /// recording frame N are destroyed once frame N + frames_in_flight is recorded (the host's
+  /// fence for frame N has then been waited on). Default 0.
+  std::uint64_t frame_index = 0;
   SceneView main_view;       ///< The host's main view: matrices, eye, extent, formats.
   DirectionalLight light;    ///< The scene's light (for specular highlights).
-  GpuTimer* timer = nullptr; ///< Optional: effects time their passes with it.
+  GpuTimer* timer = nullptr; ///< Optional: effects time their passes with it. Default none.
+  /// The host's scene snapshot, set for the whole frame (update, record_passes, record_draw)
+  /// when the host copies one for effects that want it (Effect::wants_snapshot); its images
+  /// hold this frame's opaque colour (with mips) and depth in record_draw. nullptr when the
+  /// host takes none: effects then render their own pass instead. Default none.
+  const SceneSnapshot* snapshot = nullptr;
 };
 
 /// What an effect needs at creation.
 struct EffectCreateInfo {
   const Context* context = nullptr; ///< Required; must outlive the effect.
   /// Formats of the host's main rendering, where record_draw draws.
-  VkFormat color_format = VK_FORMAT_R8G8B8A8_SRGB;
-  VkFormat depth_format = VK_FORMAT_D32_SFLOAT;
-  /// Optional scene: effects read anchors ("water", "window", "probe") and the light from it.
+  VkFormat color_format = VK_FORMAT_R8G8B8A8_SRGB; ///< Default R8G8B8A8_SRGB.
+  VkFormat depth_format = VK_FORMAT_D32_SFLOAT;    ///< Default D32_SFLOAT.
+  /// How many frames the host may have recorded and not yet waited for: sizes per-frame
+  /// uniform rings and delays the destruction of replaced resources. 1..16. Default 2.
+  std::uint32_t frames_in_flight = 2;
+  /// Optional scene: effects read anchors ("water", "window", "probe"), nodes and the light from
+  /// it. Must outlive the effect. Default none.
   const Scene* scene = nullptr;
 };
 
-/// A reflection/refraction effect. Lifecycle per frame: update(info) → record_passes(cmd,
-/// scene) outside any rendering → the host begins its main rendering → record_draw(cmd, info)
-/// → the host ends it. Effects own their targets and recreate them when the extent changes.
+/// A reflection/refraction effect. Per frame, in the phases of DESIGN.md ("Frame phases"):
+///   1. update(info): camera, time, extent; creates or resizes targets. On error the host skips
+///      this effect for the frame (nothing of it is recorded) and reports the error.
+///   2. offscreen: record_passes(cmd, info, scene) outside any rendering.
+///   3. opaque: the host draws its scene into its main colour + depth (leaving out the objects
+///      drawn_objects() names), then ends that rendering.
+///   4. snapshot: when an effect wants_snapshot(), the host copies colour + depth once
+///      (SceneSnapshot::record) and passes it in FrameInfo::snapshot.
+///   5. surfaces: inside the host's main rendering again (colour + depth loaded),
+///      record_draw(cmd, info).
+///   6. overlay: debug thumbnails of debug_targets().
+/// Replaced resources are destroyed frames_in_flight frames later; effects never idle the
+/// host's device. Destroy an effect only after the GPU finished the frames that used it.
 class Effect {
 public:
   virtual ~Effect() = default;
   /// The registered type name ("water").
   [[nodiscard]] virtual std::string_view type() const = 0;
   /// Sets one parameter. Errors: unknown key (lists the valid keys), wrong type, non-finite or
-  /// out-of-range value (names parameter, value and range). Nothing is clamped silently.
+  /// out-of-range value (names effect.key, value and range). Nothing is clamped silently, and
+  /// nothing changes on error.
   [[nodiscard]] virtual Result<void> set_param(std::string_view key, const ParamValue& value) = 0;
   /// Reads one parameter's current value (unknown key: the error lists the valid keys).
   [[nodiscard]] virtual Result<ParamValue> get_param(std::string_view key) const = 0;
-  /// Per-frame state: camera, time, extent. Creates or resizes targets; a failure is kept in
-  /// error() and the effect records nothing until a later update succeeds.
-  virtual void update(const FrameInfo& info) = 0;
-  /// Offscreen passes (outside any rendering), calling back into the host's scene.
-  virtual void record_passes(VkCommandBuffer cmd, SceneSource& scene) = 0;
-  /// The effect's surfaces, inside the host's main rendering.
-  virtual void record_draw(VkCommandBuffer cmd, const FrameInfo& info) = 0;
-  /// The effect's intermediate targets, for thumbnails and tests.
-  [[nodiscard]] virtual std::span<const DebugTarget> debug_targets() const = 0;
-  /// The last failure of update(), or nullptr.
-  [[nodiscard]] virtual const Error* error() const = 0;
+  /// Phase 1: per-frame state (camera, time, extent); creates or resizes targets.
+  [[nodiscard]] virtual Result<void> update(const FrameInfo& info) = 0;
+  /// Phase 2: offscreen passes (outside any rendering), drawing the host's scene through
+  /// `scene`, timed with `info.timer` when given.
+  [[nodiscard]] virtual Result<void> record_passes(VkCommandBuffer cmd, const FrameInfo& info,
+                                                   SceneSource& scene) = 0;
+  /// Phase 5: the effect's surfaces, inside the host's main rendering (formats of
+  /// EffectCreateInfo); may sample `info.snapshot`.
+  [[nodiscard]] virtual Result<void> record_draw(VkCommandBuffer cmd, const FrameInfo& info) = 0;
+  /// The effect's intermediate targets, for thumbnails and tests (after update()).
+  [[nodiscard]] virtual Span<const DebugTarget> debug_targets() const = 0;
+  /// True when record_draw samples FrameInfo::snapshot this frame (the host then records one
+  /// SceneSnapshot copy, shared by every effect). Default false.
+  [[nodiscard]] virtual bool wants_snapshot() const { return false; }
+  /// Objects of EffectCreateInfo::scene (indices into Scene::objects) that this effect draws
+  /// itself with its own shading: the host's scene renderer leaves them out. Default none.
+  [[nodiscard]] virtual Span<const int> drawn_objects() const { return {}; }
 };
 
 /// Creates an effect.

@@ -1,6 +1,6 @@
 // Snell runtime: frame orchestration for the embedded default host (the CLI and samples):
-// offscreen passes, the main pass (scene + effect surfaces), debug thumbnails (seed 004's
-// debug window), GPU timestamps, and readback.
+// offscreen passes, the opaque scene, the scene snapshot, effect surfaces, debug thumbnails
+// (seed 004's debug window), GPU timestamps, and readback.
 #pragma once
 
 #include <snell/context.hpp>
@@ -9,10 +9,9 @@
 #include <snell/images.hpp>
 #include <snell/scene.hpp>
 #include <snell/scene_source.hpp>
+#include <snell/span.hpp>
 
-#include <functional>
 #include <memory>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -26,21 +25,16 @@ struct FrameDesc {
   bool debug_targets = false; ///< Composite thumbnails into the corners. Default false.
 };
 
-/// What one rendered frame cost.
+/// What one rendered frame cost and what went wrong in it.
 struct FrameStats {
-  std::vector<PassTime> passes; ///< GPU time of each pass, in order ("frame" is the whole).
-  double gpu_ms = 0.0;          ///< GPU time of the whole frame (timestamps).
-  double cpu_ms = 0.0;          ///< Wall time from recording to the fence signalling.
-};
-
-/// Callbacks through which effects join a frame (issue-4 plugins use them).
-struct FrameHooks {
-  /// Offscreen passes before the main pass (may call back into the scene source).
-  std::function<void(VkCommandBuffer, GpuTimer&, const SceneView& main_view)> offscreen;
-  /// Draws inside the main rendering, after the scene.
-  std::function<void(VkCommandBuffer, const SceneView& main_view)> in_main;
-  /// Extra debug thumbnails, asked for after the main pass (effects create targets lazily).
-  std::function<std::vector<DebugTarget>()> debug_targets;
+  std::vector<PassTime> passes;      ///< GPU time of each pass, in order ("frame" is the whole).
+  double gpu_ms = 0.0;               ///< GPU time of the whole frame (timestamps).
+  double cpu_ms = 0.0;               ///< Wall time from recording to the fence signalling.
+  std::uint64_t frame_index = 0;     ///< The FrameInfo::frame_index this frame used (1, 2, ...).
+  std::uint32_t snapshot_copies = 0; ///< Scene snapshots copied this frame (0 or 1).
+  /// Effects skipped this frame because update(), record_passes() or record_draw() failed:
+  /// "<type>: <message>" each (code and VkResult kept). The rest of the frame was rendered.
+  std::vector<Error> effect_errors;
 };
 
 /// The main view of a camera for a `width` x `height` output: y-flipped Vulkan projection with
@@ -48,7 +42,10 @@ struct FrameHooks {
 [[nodiscard]] SceneView make_main_view(const CameraDesc& camera, std::uint32_t width,
                                        std::uint32_t height);
 
-/// Records, submits and times frames into an owned output target.
+/// Records, submits and times frames into an owned output target, in the frame phases of
+/// DESIGN.md: effects' offscreen passes → opaque scene → scene snapshot (once, when an effect
+/// wants it) → effect surfaces → debug overlay. Each frame is waited for before render() returns
+/// (one frame in flight; effects may still be created with more).
 class FrameRenderer {
 public:
   [[nodiscard]] static Result<FrameRenderer> create(const Context& ctx, const FrameDesc& desc);
@@ -56,15 +53,14 @@ public:
   FrameRenderer& operator=(FrameRenderer&&) noexcept;
   ~FrameRenderer();
 
-  /// Renders one frame of `source` seen by `camera` at `time` seconds and waits for it.
+  /// Renders one frame of `source` seen by `camera` at `time` seconds, with `effects` (may be
+  /// empty), and waits for it. An effect whose update / record_passes / record_draw fails is
+  /// skipped for the rest of the frame and reported in FrameStats::effect_errors. When
+  /// `source` is a SceneRenderer, the objects effects draw themselves (Effect::drawn_objects)
+  /// are hidden from it. Errors: the scene's own draw failed, or a Vulkan call failed.
   [[nodiscard]] Result<FrameStats> render(SceneSource& source, const CameraDesc& camera, float time,
-                                          const FrameHooks& hooks = {});
-  /// Renders one frame with effects: each effect's update() and record_passes() (offscreen,
-  /// drawing `source`), the main pass (scene, then each effect's record_draw()), and the
-  /// effects' debug targets as thumbnails when enabled. The first effect error is returned.
-  [[nodiscard]] Result<FrameStats> render(SceneSource& source, const CameraDesc& camera, float time,
-                                          std::span<Effect* const> effects,
-                                          const DirectionalLight& light);
+                                          Span<Effect* const> effects = {},
+                                          const DirectionalLight& light = {});
   /// The output after render().
   [[nodiscard]] const RenderTarget& target() const;
   /// Reads the output back (RGBA8, sRGB-encoded for the default format).

@@ -40,6 +40,8 @@ struct RenderTargetDesc {
 };
 
 /// Colour (+ optional depth) images to render into with dynamic rendering and then sample.
+/// Samplable from creation on: colour is cleared to transparent black, depth to 1, both in
+/// SHADER_READ_ONLY_OPTIMAL.
 ///
 /// Layout protocol: `begin_rendering` transitions colour to COLOR_ATTACHMENT_OPTIMAL and depth
 /// to DEPTH_ATTACHMENT_OPTIMAL; `end_rendering` (or `generate_mips`) leaves every level of colour,
@@ -67,6 +69,10 @@ public:
   /// mips, generates the chain first by linear blits.
   void end_rendering(VkCommandBuffer cmd) const;
 
+  /// Renders on top of the finished colour and depth (both LOADed, after end_rendering), e.g.
+  /// the surfaces phase after the scene snapshot. Pair with end_rendering.
+  void continue_rendering(VkCommandBuffer cmd) const;
+
   /// Renders on top of the finished colour (level 0, no depth): LOAD instead of CLEAR, for
   /// overlays such as debug thumbnails. Pair with end_overlay.
   void begin_overlay(VkCommandBuffer cmd) const;
@@ -82,10 +88,16 @@ public:
   [[nodiscard]] VkImageView color_view() const { return color_view_; } ///< All levels.
   [[nodiscard]] VkImage depth_image() const { return depth_; }
   [[nodiscard]] VkImageView depth_view() const { return depth_view_; }
+  /// D32_SFLOAT with a depth image, UNDEFINED without.
+  [[nodiscard]] VkFormat depth_format() const {
+    return depth_ != VK_NULL_HANDLE ? VK_FORMAT_D32_SFLOAT : VK_FORMAT_UNDEFINED;
+  }
   [[nodiscard]] explicit operator bool() const { return color_ != VK_NULL_HANDLE; }
 
 private:
   void reset();
+  /// Clears colour (all levels) and depth and leaves them SHADER_READ_ONLY_OPTIMAL.
+  void clear_to_samplable(VkCommandBuffer cmd) const;
   /// Ends the rendering and finishes colour (mips, SHADER_READ_ONLY_OPTIMAL).
   void finish_color(VkCommandBuffer cmd) const;
   const Context::Impl* ctx_ = nullptr;

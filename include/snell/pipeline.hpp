@@ -1,44 +1,101 @@
-// Snell runtime: small builders for shader modules and dynamic-rendering graphics pipelines,
-// used by the runtime and by plugins (the caller owns and destroys what they return).
+// Snell runtime: shader modules and pipelines for dynamic rendering and compute. `Pipeline` is
+// the RAII object plugins use (it owns its layout); the free functions are its building blocks,
+// shared with the runtime's own renderers (the caller owns what they return).
 #pragma once
 
 #include <snell/result.hpp>
+#include <snell/span.hpp>
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
-#include <span>
 #include <string_view>
+#include <vector>
 
 namespace snell {
 
-/// Creates a shader module from SPIR-V words (e.g. Snell's embedded `snell::shaders::*`).
+class Context;
+
+/// Creates a shader module from SPIR-V words (e.g. an embedded `snell::<plugin>::shaders::*`).
 /// Errors name `name` and the VkResult.
 [[nodiscard]] Result<VkShaderModule>
-create_shader_module(VkDevice device, std::span<const std::uint32_t> code, std::string_view name);
+create_shader_module(VkDevice device, Span<const std::uint32_t> code, std::string_view name);
 
-/// What varies between Snell's graphics pipelines. Everything else is fixed: one colour
-/// attachment, fill mode, no multisampling, no depth clamp (oblique near-plane clipping needs
-/// real near clipping), dynamic viewport, scissor, cull mode and front face.
-struct GraphicsPipelineDesc {
-  VkShaderModule vertex = VK_NULL_HANDLE;      ///< Required; entry point "main".
-  VkShaderModule fragment = VK_NULL_HANDLE;    ///< Required; entry point "main".
-  VkPipelineLayout layout = VK_NULL_HANDLE;    ///< Required.
-  VkFormat color_format = VK_FORMAT_UNDEFINED; ///< The colour attachment's format. Required.
+/// The fixed-function state of a graphics pipeline. Not configurable: fill mode, no depth clamp
+/// (oblique near-plane clipping needs real near clipping), dynamic viewport, scissor, cull mode
+/// and front face (mirrored passes swap the front face per draw).
+struct RasterState {
+  /// One format per colour attachment, in attachment order. Default: none (depth only).
+  std::vector<VkFormat> color_formats;
   VkFormat depth_format = VK_FORMAT_UNDEFINED; ///< Depth attachment format; UNDEFINED = none.
-  std::uint32_t view_mask = 0;                 ///< Multiview mask (0 = single view). Default 0.
-  bool vertex_input = true; ///< Read snell::Vertex from binding 0 (else none). Default true.
-  bool depth_test = true;   ///< Test against the depth attachment (if any). Default true.
-  bool depth_write = true;  ///< Write depth (if any). Default true.
+  /// Samples per pixel of the attachments. Default 1.
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  std::uint32_t view_mask = 0; ///< Multiview mask (0 = single view; 0b111111 cube). Default 0.
+  bool vertex_input = true;    ///< Read snell::Vertex from binding 0 (else none). Default true.
+  bool depth_test = true;      ///< Test against the depth attachment (if any). Default true.
+  bool depth_write = true;     ///< Write depth (if any). Default true.
   VkCompareOp depth_compare = VK_COMPARE_OP_LESS; ///< Default LESS (depth range [0,1]).
-  /// Straight-alpha "over" blending: rgb = src.rgb * a + dst.rgb * (1 - a),
+  /// Straight-alpha "over" blending on every attachment: rgb = src.rgb * a + dst.rgb * (1 - a),
   /// alpha = a + dst.a * (1 - a). Default false (opaque).
   bool alpha_blend = false;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST; ///< Default triangle list.
 };
 
-/// Creates a graphics pipeline for dynamic rendering. Errors name `name` and the VkResult.
+/// Creates a graphics pipeline from modules (entry points "main") and a layout the caller owns.
+/// Errors name `name` and the VkResult.
 [[nodiscard]] Result<VkPipeline>
-create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& desc, std::string_view name);
+create_graphics_pipeline(VkDevice device, VkShaderModule vertex, VkShaderModule fragment,
+                         VkPipelineLayout layout, const RasterState& state, std::string_view name);
+
+/// A graphics pipeline described with SPIR-V: what Pipeline::create takes.
+struct GraphicsPipelineDesc {
+  const char* label = "graphics pipeline"; ///< Names the pipeline in errors. Required non-null.
+  Span<const std::uint32_t> vertex;        ///< Vertex shader SPIR-V (entry "main"). Required.
+  Span<const std::uint32_t> fragment;      ///< Fragment shader SPIR-V (entry "main"). Required.
+  std::vector<VkDescriptorSetLayout> set_layouts;  ///< Set i = set_layouts[i]. Default none.
+  std::vector<VkPushConstantRange> push_constants; ///< Default none.
+  RasterState state; ///< Attachments, samples, view mask, depth, blending, topology.
+};
+
+/// A compute pipeline described with SPIR-V.
+struct ComputePipelineDesc {
+  const char* label = "compute pipeline"; ///< Names the pipeline in errors. Required non-null.
+  Span<const std::uint32_t> compute;      ///< Compute shader SPIR-V (entry "main"). Required.
+  std::vector<VkDescriptorSetLayout> set_layouts;  ///< Default none.
+  std::vector<VkPushConstantRange> push_constants; ///< Default none.
+};
+
+/// A pipeline and its layout (RAII, move-only). Must not outlive its Context.
+class Pipeline {
+public:
+  /// Builds a graphics pipeline. Errors: invalid_argument (a missing shader), vulkan_error
+  /// naming `desc.label` and the VkResult.
+  [[nodiscard]] static Result<Pipeline> create(const Context& ctx,
+                                               const GraphicsPipelineDesc& desc);
+  /// Builds a compute pipeline.
+  [[nodiscard]] static Result<Pipeline> create(const Context& ctx, const ComputePipelineDesc& desc);
+
+  Pipeline() = default;
+  Pipeline(Pipeline&& other) noexcept;
+  Pipeline& operator=(Pipeline&& other) noexcept;
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
+  ~Pipeline();
+
+  /// vkCmdBindPipeline at the pipeline's bind point.
+  void bind(VkCommandBuffer cmd) const;
+  [[nodiscard]] VkPipeline handle() const { return pipeline_; }
+  [[nodiscard]] VkPipelineLayout layout() const { return layout_; }
+  /// GRAPHICS or COMPUTE.
+  [[nodiscard]] VkPipelineBindPoint bind_point() const { return bind_point_; }
+  [[nodiscard]] explicit operator bool() const { return pipeline_ != VK_NULL_HANDLE; }
+
+private:
+  void reset();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+};
 
 } // namespace snell

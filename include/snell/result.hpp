@@ -2,6 +2,7 @@
 // or an Error whose message names the offending file, parameter or value.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -31,6 +32,9 @@ enum class ErrorCode {
 struct Error {
   ErrorCode code = ErrorCode::invalid_argument; ///< Kind of failure. Default invalid_argument.
   std::string message;                          ///< Human-readable; names file/parameter/value.
+  /// The VkResult of the Vulkan call that failed (code vulkan_error or out_of_memory), as its
+  /// integer value; 0 (VK_SUCCESS) when the failure did not come from Vulkan. Default 0.
+  std::int32_t vk_result = 0;
 };
 
 /// Thrown only by `Result::value()` when called on an error: a programming error, like

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <snell/result.hpp>
+#include <snell/scene_types.hpp>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -69,15 +70,6 @@ struct Mesh {
   int material = -1;                  ///< Index into Scene::materials, or -1 for the default.
 };
 
-/// Which passes an object takes part in (bit mask). The seeds' IsReflected / IsRefracted.
-namespace layer {
-inline constexpr std::uint32_t main = 1u << 0;      ///< Drawn in the main view.
-inline constexpr std::uint32_t reflected = 1u << 1; ///< Drawn in planar reflections.
-inline constexpr std::uint32_t refracted = 1u << 2; ///< Drawn in refraction passes.
-inline constexpr std::uint32_t captured = 1u << 3;  ///< Drawn into dynamic cube maps.
-inline constexpr std::uint32_t all = main | reflected | refracted | captured;
-} // namespace layer
-
 /// An instance of a mesh in the world.
 struct Object {
   std::string name;
@@ -99,14 +91,6 @@ struct CameraDesc {
   float yfov = 0.7853982f;         ///< Vertical field of view, radians. Default 45 degrees.
   float z_near = 0.1f;             ///< > 0. Default 0.1.
   float z_far = 200.0f;            ///< > z_near, or +inf. Default 200.
-};
-
-/// One directional light (glTF KHR_lights_punctual "directional").
-struct DirectionalLight {
-  glm::vec3 direction{-0.4f, -1.0f, -0.3f}; ///< Direction the light travels (toward the scene).
-  glm::vec3 color{1.0f, 0.97f, 0.9f};       ///< Linear colour. Default warm white.
-  float intensity = 1.0f;                   ///< Multiplier. Default 1.
-  glm::vec3 ambient{0.25f, 0.28f, 0.32f};   ///< Ambient term added to every surface.
 };
 
 /// A gradient sky: horizon to zenith above, horizon to ground below.

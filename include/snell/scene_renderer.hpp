@@ -4,6 +4,7 @@
 #include <snell/context.hpp>
 #include <snell/scene.hpp>
 #include <snell/scene_source.hpp>
+#include <snell/span.hpp>
 
 #include <memory>
 
@@ -30,12 +31,16 @@ public:
   SceneRenderer& operator=(SceneRenderer&&) noexcept;
   ~SceneRenderer() override;
 
-  void draw_scene(VkCommandBuffer cmd, const SceneView& view) override;
+  /// Draws the objects in `view.layer_mask` that are not hidden, then the sky. Errors: a
+  /// pipeline for the view's formats / view mask cannot be created (vulkan_error).
+  [[nodiscard]] Result<void> draw_scene(VkCommandBuffer cmd, const SceneView& view) override;
+  /// Leaves out these objects (indices into scene().objects) from now on, in every view: the
+  /// ones effects draw with their own shading (Effect::drawn_objects). Out-of-range indices are
+  /// ignored. Replaces the previous set; an empty span shows everything again.
+  void set_hidden_objects(Span<const int> objects);
 
   /// The scene as uploaded (objects, cameras, light, anchors).
   [[nodiscard]] const Scene& scene() const;
-  /// Errors recorded while drawing (pipeline creation failures); empty when all went well.
-  [[nodiscard]] const std::string& last_error() const;
 
   struct Impl;
 

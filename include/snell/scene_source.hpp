@@ -2,7 +2,8 @@
 #pragma once
 
 #include <snell/math/plane.hpp>
-#include <snell/scene.hpp>
+#include <snell/result.hpp>
+#include <snell/scene_types.hpp>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -46,8 +47,10 @@ class SceneSource {
 public:
   virtual ~SceneSource() = default;
   /// Records draws of the scene for `view` inside an active dynamic rendering whose attachments
-  /// match `view.color_format` / `view.depth_format` and `view.view_mask`.
-  virtual void draw_scene(VkCommandBuffer cmd, const SceneView& view) = 0;
+  /// match `view.color_format` / `view.depth_format` and `view.view_mask`. Errors (a pipeline
+  /// that cannot be created for the view's formats, ...) are returned, never only logged; the
+  /// caller then ends its rendering and skips what depended on the draw.
+  [[nodiscard]] virtual Result<void> draw_scene(VkCommandBuffer cmd, const SceneView& view) = 0;
 };
 
 } // namespace snell

@@ -1,19 +1,18 @@
-// The water effect: reflection and refraction passes into its own targets, then the surface
-// inside the host's main rendering.
+// The water effect: a reflection pass (and, without a scene snapshot, a refraction pass) into
+// its own targets, then the surface inside the host's main rendering. Everything that is not
+// water's own logic (targets, rings, descriptors, pipelines, views, clipping, timing, deferred
+// destruction) comes from the plugin toolkit (snell/plugin.hpp).
 #include "water_internal.hpp"
 
-#include <snell/buffer.hpp>
 #include <snell/builtin_scenes.hpp>
-#include <snell/images.hpp>
 #include <snell/math.hpp>
-#include <snell/pipeline.hpp>
+#include <snell/plugin.hpp>
 
 #include "snell_water_shaders.hpp"
 
 #include <glm/matrix.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 namespace snell {
@@ -27,31 +26,14 @@ struct WaterBlock {
       extent, side;
 };
 
-constexpr std::uint32_t kSlots = 3; // uniform slots: frames a host may have in flight
-
-template <class T> T vk_struct(VkStructureType type) {
-  T v{};
-  v.sType = type;
-  return v;
-}
-
-#define WATER_VK(call, what)                                                                       \
-  do {                                                                                             \
-    const VkResult r_ = (call);                                                                    \
-    if (r_ != VK_SUCCESS) {                                                                        \
-      return fail(ErrorCode::vulkan_error, std::string("water: ") + (what) +                       \
-                                               " failed (VkResult " + std::to_string(r_) + ")");   \
-    }                                                                                              \
-  } while (false)
+enum Binding : std::uint32_t { kUniforms, kReflection, kRefraction, kRefractionDepth, kNormals };
 
 class Water final : public WaterEffect {
 public:
-  ~Water() override { destroy(); }
-
   Result<void> init(const EffectCreateInfo& info) {
     ctx_ = info.context;
-    color_format_ = info.color_format;
-    depth_format_ = info.depth_format;
+    frames_in_flight_ = info.frames_in_flight;
+    release_ = DeferredRelease(info.frames_in_flight);
     if (info.scene != nullptr) {
       if (const Anchor* a = info.scene->find_anchor("water")) {
         params_.height = a->position.y;
@@ -60,30 +42,49 @@ public:
       }
     }
     auto tex = load_normal_map("");
-    auto repeat = Sampler::create(*ctx_, SamplerDesc{true, true, AddressMode::repeat, 1.0f});
-    auto clamp = Sampler::create(*ctx_, SamplerDesc{true, false, AddressMode::clamp_to_edge, 1.0f});
-    auto nearest =
-        Sampler::create(*ctx_, SamplerDesc{false, false, AddressMode::clamp_to_edge, 1.0f});
-    if (!tex || !repeat || !clamp || !nearest) {
-      return !tex      ? tex.error()
-             : !repeat ? repeat.error()
-             : !clamp  ? clamp.error()
-                       : nearest.error();
+    if (!tex) {
+      return tex.error();
     }
     normal_map_ = std::move(*tex);
-    repeat_ = std::move(*repeat);
-    clamp_ = std::move(*clamp);
-    nearest_ = std::move(*nearest);
-    VkDeviceSize align = 256; // conservative minUniformBufferOffsetAlignment
-    stride_ = (sizeof(WaterBlock) + align - 1) / align * align;
-    auto ubo =
-        Buffer::create(*ctx_, BufferDesc{stride_ * kSlots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                         MemoryUsage::upload, "water uniforms"});
-    if (!ubo) {
-      return ubo.error();
+    auto ring = UniformRing::create(
+        *ctx_, UniformRingDesc{sizeof(WaterBlock), 1, frames_in_flight_, "water uniforms"});
+    if (!ring) {
+      return ring.error();
     }
-    ubo_ = std::move(*ubo);
-    return create_pipeline();
+    ubo_ = std::move(*ring);
+    constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    DescriptorSetDesc sd;
+    sd.bindings = {{kUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kBoth},
+                   {kReflection},
+                   {kRefraction},
+                   {kRefractionDepth},
+                   {kNormals}};
+    sd.frames_in_flight = frames_in_flight_;
+    sd.label = "water descriptors";
+    auto sets = DescriptorSets::create(*ctx_, sd);
+    if (!sets) {
+      return sets.error();
+    }
+    sets_ = std::move(*sets);
+    sets_.set_buffer(kUniforms, ubo_.buffer(), 0, ubo_.block_size());
+    sets_.set_image(kNormals, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
+    GraphicsPipelineDesc pd;
+    pd.label = "water surface pipeline";
+    pd.vertex = water::shaders::water_vert;
+    pd.fragment = water::shaders::water_frag;
+    pd.set_layouts = {sets_.layout()};
+    pd.state.color_formats = {info.color_format};
+    pd.state.depth_format = info.depth_format;
+    pd.state.vertex_input = false;
+    // The surface does not write depth: the scene's depth behind it stays for effects after it.
+    pd.state.depth_write = false;
+    pd.state.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+    auto pipeline = Pipeline::create(*ctx_, pd);
+    if (!pipeline) {
+      return pipeline.error();
+    }
+    pipeline_ = std::move(*pipeline);
+    return {};
   }
 
   std::string_view type() const override { return "water"; }
@@ -119,81 +120,78 @@ public:
     return {};
   }
   const WaterParams& params() const override { return params_; }
-  std::span<const DebugTarget> debug_targets() const override { return debug_; }
-  const Error* error() const override { return error_ ? &*error_ : nullptr; }
-
-  void update(const FrameInfo& info) override {
-    info_ = info;
-    const VkExtent2D e = info.main_view.extent;
-    const auto scaled = [&](std::uint32_t v) {
-      return std::max(
-          1u, static_cast<std::uint32_t>(static_cast<float>(v) * params_.resolution_scale + 0.5f));
-    };
-    const std::uint32_t w = scaled(e.width), h = scaled(e.height);
-    if (!reflection_ || reflection_.width() != w || reflection_.height() != h) {
-      if (reflection_) {
-        vkDeviceWaitIdle(ctx_->device()); // targets may be in use by a frame in flight
-      }
-      auto r = RenderTarget::create(*ctx_, RenderTargetDesc{w, h, ColorFormat::rgba16_float, true,
-                                                            false, "water reflection"});
-      auto f = RenderTarget::create(*ctx_, RenderTargetDesc{w, h, ColorFormat::rgba16_float, true,
-                                                            false, "water refraction"});
-      if (!r || !f) {
-        error_ = !r ? r.error() : f.error();
-        return;
-      }
-      reflection_ = std::move(*r);
-      refraction_ = std::move(*f);
-      write_descriptors();
-      debug_ = {
-          DebugTarget{"water.reflection", reflection_.color_view(), false,
-                      reflection_.color_image(), w, h, reflection_.vk_color_format()},
-          DebugTarget{"water.refraction", refraction_.color_view(), false,
-                      refraction_.color_image(), w, h, refraction_.vk_color_format()},
-          DebugTarget{"water.refraction_depth", refraction_.depth_view(), true,
-                      refraction_.depth_image(), w, h, VK_FORMAT_D32_SFLOAT},
-      };
-    }
-    error_.reset();
-    compute_views();
+  Span<const DebugTarget> debug_targets() const override { return debug_; }
+  bool wants_snapshot() const override {
+    return params_.refraction_source == WaterRefractionSource::snapshot;
   }
 
-  void record_passes(VkCommandBuffer cmd, SceneSource& scene) override {
-    if (error_ || !reflection_) {
-      return;
+  Result<void> update(const FrameInfo& info) override {
+    frame_ = info.frame_index;
+    release_.collect(frame_);
+    use_snapshot_ = wants_snapshot() && info.snapshot != nullptr;
+    reflection_.set_scale(params_.resolution_scale);
+    refraction_.set_scale(params_.resolution_scale);
+    const VkExtent2D e = info.main_view.extent;
+    auto made = reflection_.fit(*ctx_, e, frame_, release_);
+    if (!made) {
+      return made.error();
     }
-    const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    if (info_.timer != nullptr) {
-      info_.timer->begin(cmd, "water.reflection");
+    bool changed = *made;
+    if (!use_snapshot_) {
+      auto made_f = refraction_.fit(*ctx_, e, frame_, release_);
+      if (!made_f) {
+        return made_f.error();
+      }
+      changed = changed || *made_f;
     }
+    if (changed || debug_.empty() || use_snapshot_ != debug_has_snapshot_) {
+      debug_.clear();
+      reflection_.append_debug_targets(debug_, "water.reflection");
+      debug_.pop_back(); // the reflection's depth is of no interest
+      if (!use_snapshot_) {
+        refraction_.append_debug_targets(debug_, "water.refraction");
+      }
+      debug_has_snapshot_ = use_snapshot_;
+    }
+    compute_views(info.main_view);
+    return {};
+  }
+
+  Result<void> record_passes(VkCommandBuffer cmd, const FrameInfo& info,
+                             SceneSource& scene) override {
     // Both passes only render the screen rectangle the surface can sample (the water's
     // projected bounds plus the largest ripple offset): on lavapipe this skips most of the fill.
-    const VkRect2D scissor = sampled_rect();
-    reflection_.begin_rendering(cmd, clear);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    scene.draw_scene(cmd, reflection_view_);
-    reflection_.end_rendering(cmd);
-    if (info_.timer != nullptr) {
-      info_.timer->end(cmd);
-      info_.timer->begin(cmd, "water.refraction");
+    ScenePass pass;
+    pass.name = "water.reflection";
+    pass.view = reflection_view_;
+    pass.scissor = sampled_rect(info.main_view);
+    if (auto r = record_scene_pass(cmd, scene, reflection_.target(), pass, info.timer); !r) {
+      return r;
     }
-    refraction_.begin_rendering(cmd, clear);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    scene.draw_scene(cmd, refraction_view_);
-    refraction_.end_rendering(cmd);
-    if (info_.timer != nullptr) {
-      info_.timer->end(cmd);
+    if (!use_snapshot_) {
+      pass.name = "water.refraction";
+      pass.view = refraction_view_;
+      return record_scene_pass(cmd, scene, refraction_.target(), pass, info.timer);
     }
+    return {};
   }
 
-  void record_draw(VkCommandBuffer cmd, const FrameInfo& info) override {
-    if (error_ || !reflection_) {
-      return;
-    }
+  Result<void> record_draw(VkCommandBuffer cmd, const FrameInfo& info) override {
     const WaterParams& p = params_;
     WaterBlock b{};
     b.view_proj = info.main_view.proj * info.main_view.view;
-    b.refraction_inv_vp = glm::inverse(refraction_view_.proj * refraction_view_.view);
+    const VkSampler clamp = ctx_->sampler(StandardSampler::linear_clamp);
+    const VkSampler nearest = ctx_->sampler(StandardSampler::nearest_clamp);
+    sets_.set_image(kReflection, reflection_.target().color_view(), clamp);
+    if (use_snapshot_) {
+      b.refraction_inv_vp = glm::inverse(info.snapshot->view_proj());
+      sets_.set_image(kRefraction, info.snapshot->color_view(), clamp);
+      sets_.set_image(kRefractionDepth, info.snapshot->depth_view(), nearest);
+    } else {
+      b.refraction_inv_vp = glm::inverse(refraction_view_.proj * refraction_view_.view);
+      sets_.set_image(kRefraction, refraction_.target().color_view(), clamp);
+      sets_.set_image(kRefractionDepth, refraction_.target().depth_view(), nearest);
+    }
     b.eye = glm::vec4(info.main_view.eye, 1.0f);
     b.plane = glm::vec4(0.0f, 1.0f, 0.0f, -p.height);
     b.rect = glm::vec4(p.center, p.size);
@@ -216,15 +214,16 @@ public:
     b.extent =
         glm::vec4(float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height));
     b.side = glm::vec4(underwater_ ? -1.0f : 1.0f, p.ior, p.reflectance, 0.0f);
-    const std::uint32_t slot = slot_;
-    slot_ = (slot_ + 1) % kSlots;
-    std::memcpy(static_cast<char*>(ubo_.mapped()) + stride_ * slot, &b, sizeof(b));
-    const std::uint32_t offset = static_cast<std::uint32_t>(stride_ * slot);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    auto offset = ubo_.push(frame_, b);
+    if (!offset) {
+      return offset.error();
+    }
+    pipeline_.bind(cmd);
     vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
     vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 1, &offset);
+    sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), frame_, &*offset, 1);
     vkCmdDraw(cmd, 4, 1, 0, 0);
+    return {};
   }
 
 private:
@@ -245,7 +244,8 @@ private:
     return Texture2D::create(*ctx_, *normals, true);
   }
 
-  /// Loads a new normal map when the path changed; the old one stays on error.
+  /// Loads a new normal map when the path changed; the old one stays on error, and is
+  /// destroyed past the frames in flight when replaced.
   Result<void> apply_normal_map(const std::string& file) {
     if (file == params_.normal_map && normal_map_.view() != VK_NULL_HANDLE) {
       return {};
@@ -254,17 +254,14 @@ private:
     if (!tex) {
       return tex.error();
     }
-    vkDeviceWaitIdle(ctx_->device()); // the old map may be in use by a frame in flight
+    release_.retire(frame_, std::move(normal_map_));
     normal_map_ = std::move(*tex);
-    if (reflection_) {
-      write_descriptors();
-    }
+    sets_.set_image(kNormals, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
     return {};
   }
 
-  void compute_views() {
+  void compute_views(const SceneView& main) {
     const WaterParams& p = params_;
-    const SceneView& main = info_.main_view;
     // Reflection: mirrored camera; refraction: the main camera. Seen from above the water the
     // reflection keeps y >= height - clip_offset and the refraction y <= height + clip_offset;
     // from below (underwater_) the sides swap: the surface reflects the underwater scene (total
@@ -276,36 +273,31 @@ private:
     underwater_ = signed_distance(mirror, main.eye) < 0.0f;
     const auto above_layers = static_cast<std::uint32_t>(p.reflection_layers);
     const auto below_layers = static_cast<std::uint32_t>(p.refraction_layers);
-    SceneView r = main;
-    r.view = reflect_view(main.view, mirror);
-    r.eye = reflect_point(mirror, main.eye);
+    const PlaneClip clip =
+        p.clip_mode == WaterClipMode::oblique ? PlaneClip::oblique : PlaneClip::clip_distance;
+    SceneView r = mirrored_view(main, mirror);
     r.layer_mask = underwater_ ? below_layers : above_layers;
-    r.extent = {reflection_.width(), reflection_.height()};
-    r.color_format = reflection_.vk_color_format();
-    r.depth_format = VK_FORMAT_D32_SFLOAT;
-    r.view_mask = 0;
-    SceneView f = main;
-    f.layer_mask = underwater_ ? above_layers : below_layers;
-    f.extent = r.extent;
-    f.color_format = refraction_.vk_color_format();
-    f.depth_format = VK_FORMAT_D32_SFLOAT;
-    f.view_mask = 0;
-    clip(r, underwater_ ? keep_below : keep_above);
-    clip(f, underwater_ ? keep_above : keep_below);
-    r.flip_front_face = needs_front_face_flip(r.view, r.proj);
-    f.flip_front_face = needs_front_face_flip(f.view, f.proj);
+    clip_view(r, underwater_ ? keep_below : keep_above, clip);
+    aim_at(r, reflection_.target());
     reflection_view_ = r;
-    refraction_view_ = f;
+    if (!use_snapshot_) {
+      SceneView f = main;
+      f.layer_mask = underwater_ ? above_layers : below_layers;
+      clip_view(f, underwater_ ? keep_above : keep_below, clip);
+      aim_at(f, refraction_.target());
+      refraction_view_ = f;
+    }
   }
 
   /// The texels of the targets the surface shader can read: the projected water rectangle,
   /// widened by the largest lookup offset (|slope| <= 2 sqrt(2) wave_height, times distortion)
   /// and two texels for the bilinear and gather footprints. The whole target when a corner is
   /// behind the eye (the projection of the rectangle is then unbounded).
-  [[nodiscard]] VkRect2D sampled_rect() const {
-    const VkRect2D full{{0, 0}, {reflection_.width(), reflection_.height()}};
+  [[nodiscard]] VkRect2D sampled_rect(const SceneView& main) const {
+    const VkExtent2D extent = reflection_.extent();
+    const VkRect2D full{{0, 0}, extent};
     const WaterParams& p = params_;
-    const glm::mat4 vp = info_.main_view.proj * info_.main_view.view;
+    const glm::mat4 vp = main.proj * main.view;
     glm::vec2 lo(1e30f), hi(-1e30f);
     for (int i = 0; i < 4; ++i) {
       const glm::vec2 corner =
@@ -318,8 +310,7 @@ private:
       lo = glm::min(lo, uv);
       hi = glm::max(hi, uv);
     }
-    const glm::vec2 size(static_cast<float>(full.extent.width),
-                         static_cast<float>(full.extent.height));
+    const glm::vec2 size(static_cast<float>(extent.width), static_cast<float>(extent.height));
     const glm::vec2 margin = glm::vec2(2.83f * p.wave_height * p.distortion) + 2.0f / size;
     lo = glm::clamp(lo - margin, glm::vec2(0.0f), glm::vec2(1.0f)) * size;
     hi = glm::clamp(hi + margin, glm::vec2(0.0f), glm::vec2(1.0f)) * size;
@@ -334,140 +325,23 @@ private:
                     {x1 - static_cast<std::uint32_t>(x0), y1 - static_cast<std::uint32_t>(y0)}};
   }
 
-  /// Oblique near plane when possible (the eye strictly on the clipped side), else clip
-  /// distance: a camera on or below the plane cannot use an oblique near plane.
-  void clip(SceneView& v, const Plane& keep) const {
-    v.clip_plane.reset();
-    const bool eye_clipped = signed_distance(keep, v.eye) < -1e-4f;
-    if (params_.clip_mode == WaterClipMode::oblique && eye_clipped) {
-      const glm::vec4 view_plane = to_vec4(transform_plane(keep, v.view));
-      v.proj = oblique_projection(v.proj, view_plane, DepthRange::zero_to_one);
-    } else {
-      v.clip_plane = keep;
-    }
-  }
-
-  Result<void> create_pipeline() {
-    const VkDevice d = ctx_->device();
-    VkDescriptorSetLayoutBinding bindings[5];
-    bindings[0] = {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1,
-                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-    for (std::uint32_t i = 1; i < 5; ++i) {
-      bindings[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
-                     nullptr};
-    }
-    auto lci = vk_struct<VkDescriptorSetLayoutCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    lci.bindingCount = 5;
-    lci.pBindings = bindings;
-    WATER_VK(vkCreateDescriptorSetLayout(d, &lci, nullptr, &set_layout_), "descriptor layout");
-    auto pli = vk_struct<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-    pli.setLayoutCount = 1;
-    pli.pSetLayouts = &set_layout_;
-    WATER_VK(vkCreatePipelineLayout(d, &pli, nullptr, &layout_), "pipeline layout");
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1},
-                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4}};
-    auto dpci =
-        vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-    dpci.maxSets = 1;
-    dpci.poolSizeCount = 2;
-    dpci.pPoolSizes = sizes;
-    WATER_VK(vkCreateDescriptorPool(d, &dpci, nullptr, &pool_), "descriptor pool");
-    auto ai =
-        vk_struct<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
-    ai.descriptorPool = pool_;
-    ai.descriptorSetCount = 1;
-    ai.pSetLayouts = &set_layout_;
-    WATER_VK(vkAllocateDescriptorSets(d, &ai, &set_), "descriptor set");
-
-    auto vert = create_shader_module(d, shaders::water_vert, "water.vert");
-    auto frag = create_shader_module(d, shaders::water_frag, "water.frag");
-    Result<VkPipeline> pipeline = fail(ErrorCode::vulkan_error, "water: shader modules");
-    if (vert && frag) {
-      GraphicsPipelineDesc desc;
-      desc.vertex = *vert;
-      desc.fragment = *frag;
-      desc.layout = layout_;
-      desc.color_format = color_format_;
-      desc.depth_format = depth_format_;
-      desc.vertex_input = false;
-      // The surface does not write depth: the scene's depth behind it stays for effects after it.
-      desc.depth_write = false;
-      desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-      pipeline = create_graphics_pipeline(d, desc, "water surface pipeline");
-    }
-    for (auto* m : {&vert, &frag}) {
-      if (*m) {
-        vkDestroyShaderModule(d, **m, nullptr);
-      }
-    }
-    if (!vert || !frag) {
-      return !vert ? vert.error() : frag.error();
-    }
-    if (!pipeline) {
-      return pipeline.error();
-    }
-    pipeline_ = *pipeline;
-    return {};
-  }
-
-  void write_descriptors() {
-    const VkDescriptorBufferInfo ubo{ubo_.handle(), 0, sizeof(WaterBlock)};
-    const VkDescriptorImageInfo images[4] = {
-        {clamp_.handle(), reflection_.color_view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {clamp_.handle(), refraction_.color_view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {nearest_.handle(), refraction_.depth_view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {repeat_.handle(), normal_map_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-    };
-    VkWriteDescriptorSet writes[2];
-    writes[0] = vk_struct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    writes[0].dstSet = set_;
-    writes[0].dstBinding = 0;
-    writes[0].descriptorCount = 1;
-    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
-    writes[0].pBufferInfo = &ubo;
-    writes[1] = vk_struct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    writes[1].dstSet = set_;
-    writes[1].dstBinding = 1;
-    writes[1].descriptorCount = 4;
-    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[1].pImageInfo = images;
-    vkUpdateDescriptorSets(ctx_->device(), 2, writes, 0, nullptr);
-  }
-
-  void destroy() {
-    if (ctx_ == nullptr) {
-      return;
-    }
-    const VkDevice d = ctx_->device();
-    vkDeviceWaitIdle(d);
-    vkDestroyPipeline(d, pipeline_, nullptr);
-    vkDestroyPipelineLayout(d, layout_, nullptr);
-    vkDestroyDescriptorPool(d, pool_, nullptr);
-    vkDestroyDescriptorSetLayout(d, set_layout_, nullptr);
-  }
-
   const Context* ctx_ = nullptr;
-  VkFormat color_format_ = VK_FORMAT_UNDEFINED;
-  VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
+  std::uint32_t frames_in_flight_ = 2;
+  DeferredRelease release_;
   WaterParams params_;
   std::string preset_ = "default";
-  bool underwater_ = false; ///< The eye is below the plane (this frame).
-  FrameInfo info_;
+  bool underwater_ = false;   ///< The eye is below the plane (this frame).
+  bool use_snapshot_ = false; ///< Refraction from FrameInfo::snapshot this frame.
+  bool debug_has_snapshot_ = false;
+  std::uint64_t frame_ = 0;
   SceneView reflection_view_, refraction_view_;
-  RenderTarget reflection_, refraction_;
+  ScaledTarget reflection_{{0.5f, ColorFormat::rgba16_float, true, false, "water reflection"}};
+  ScaledTarget refraction_{{0.5f, ColorFormat::rgba16_float, true, false, "water refraction"}};
   Texture2D normal_map_;
-  Sampler repeat_, clamp_, nearest_;
-  Buffer ubo_;
-  VkDeviceSize stride_ = 0;
-  std::uint32_t slot_ = 0;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  UniformRing ubo_;
+  DescriptorSets sets_;
+  Pipeline pipeline_;
   std::vector<DebugTarget> debug_;
-  std::optional<Error> error_;
 };
 
 } // namespace
@@ -475,6 +349,11 @@ private:
 Result<std::unique_ptr<WaterEffect>> create_water(const EffectCreateInfo& info) {
   if (info.context == nullptr) {
     return fail(ErrorCode::invalid_argument, "water: EffectCreateInfo::context is required");
+  }
+  if (info.frames_in_flight < 1 || info.frames_in_flight > 16) {
+    return fail(ErrorCode::invalid_argument, "water: EffectCreateInfo::frames_in_flight = " +
+                                                 std::to_string(info.frames_in_flight) +
+                                                 " is outside [1, 16]");
   }
   auto water = std::make_unique<Water>();
   if (auto r = water->init(info); !r) {

@@ -43,7 +43,7 @@ Result<glm::vec3> parse_vec3(const std::string& text, const std::string& what) {
     return fail(ErrorCode::invalid_argument,
                 what + ": '" + text + "' must be three comma-separated numbers x,y,z");
   }
-  glm::vec3 v;
+  glm::vec3 v(0.0f);
   for (int i = 0; i < 3; ++i) {
     auto f = parse_float(parts[static_cast<std::size_t>(i)], what);
     if (!f) {

@@ -145,8 +145,8 @@ int run_render(const RenderOptions& o) {
     if (!stats) {
       return failed(stats.error(), 1);
     }
-    if (!s.renderer->last_error().empty()) {
-      return failed(Error{ErrorCode::vulkan_error, s.renderer->last_error()}, 1);
+    if (!stats->effect_errors.empty()) {
+      return failed(stats->effect_errors.front(), 1);
     }
     if (i == 0) {
       startup_ms = ms_since(start); // context, upload, pipelines (created on the first draw)

@@ -112,8 +112,10 @@ Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_
     return renderer.error();
   }
   s->renderer.emplace(std::move(*renderer));
-  auto frame = FrameRenderer::create(
-      *s->ctx, FrameDesc{o.width, o.height, ColorFormat::rgba8_srgb, o.debug_targets});
+  auto frame = FrameRenderer::create(*s->ctx, FrameDesc{.width = o.width,
+                                                        .height = o.height,
+                                                        .color = ColorFormat::rgba8_srgb,
+                                                        .debug_targets = o.debug_targets});
   if (!frame) {
     return frame.error();
   }

@@ -1,6 +1,6 @@
 #include "host_scene.hpp"
 
-#include "embed_host_shaders.hpp" // generated: snell::shaders::host_scene_vert, ...
+#include "embed_host_shaders.hpp" // generated: embed::shaders::host_scene_vert, ...
 
 #include <snell/math/plane.hpp>
 
@@ -134,10 +134,10 @@ void HostScene::init(const HostDevice& device, const PoolWater& water) {
   vkUnmapMemory(d, vertex_memory_);
 
   // --- Shaders and the pipeline layout (push constants only). ---------------------------------
-  scene_vert_ = make_module(d, snell::shaders::host_scene_vert);
-  scene_frag_ = make_module(d, snell::shaders::host_scene_frag);
-  sky_vert_ = make_module(d, snell::shaders::host_sky_vert);
-  sky_frag_ = make_module(d, snell::shaders::host_sky_frag);
+  scene_vert_ = make_module(d, embed::shaders::host_scene_vert);
+  scene_frag_ = make_module(d, embed::shaders::host_scene_frag);
+  sky_vert_ = make_module(d, embed::shaders::host_sky_vert);
+  sky_frag_ = make_module(d, embed::shaders::host_sky_frag);
   const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                   sizeof(Push)};
   VkPipelineLayoutCreateInfo li{};
@@ -254,16 +254,14 @@ const HostScene::Pipelines* HostScene::pipelines_for(VkFormat color, VkFormat de
   return &pipelines_.emplace(key, p).first->second;
 }
 
-void HostScene::draw_scene(VkCommandBuffer cmd, const snell::SceneView& view) {
+snell::Result<void> HostScene::draw_scene(VkCommandBuffer cmd, const snell::SceneView& view) {
   if (view.view_mask != 0) { // multiview (cube captures): not supported by this small host
-    if (error_.empty()) {
-      error_ = "embed-host: the scene cannot draw multiview views (view_mask != 0)";
-    }
-    return;
+    return snell::fail(snell::ErrorCode::unsupported,
+                       "embed-host: the scene cannot draw multiview views (view_mask != 0)");
   }
   const Pipelines* p = pipelines_for(view.color_format, view.depth_format);
   if (p == nullptr) {
-    return;
+    return snell::fail(snell::ErrorCode::vulkan_error, error_);
   }
   Push push;
   push.matrix = view.proj * view.view; // may be mirrored (reflection) and oblique
@@ -294,6 +292,7 @@ void HostScene::draw_scene(VkCommandBuffer cmd, const snell::SceneView& view) {
                        sizeof(Push), &push);
     vkCmdDraw(cmd, 3, 1, 0, 0);
   }
+  return {};
 }
 
 HostScene::~HostScene() {

@@ -49,11 +49,9 @@ public:
   /// snell::SceneSource: draws the objects whose layers intersect `view.layer_mask`, then the
   /// sky, for `view` (matrices, clip plane, front face, attachment formats). Viewport and scissor
   /// are the caller's (Snell's targets set them in begin_rendering). Never throws: a pipeline
-  /// that cannot be created is reported by error() and nothing is drawn.
-  void draw_scene(VkCommandBuffer cmd, const snell::SceneView& view) override;
-
-  /// The first failure of draw_scene, or "".
-  [[nodiscard]] const std::string& error() const { return error_; }
+  /// that cannot be created, or a multiview view, is returned as an error and nothing is drawn.
+  [[nodiscard]] snell::Result<void> draw_scene(VkCommandBuffer cmd,
+                                               const snell::SceneView& view) override;
   [[nodiscard]] const std::vector<Object>& objects() const { return objects_; }
 
   /// The light every view is lit with (also handed to the effects in snell::FrameInfo).

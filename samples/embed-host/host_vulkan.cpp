@@ -303,8 +303,9 @@ void HostFrame::init(const HostDevice& device, VkExtent2D size) {
   };
   make_image(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
              VK_IMAGE_ASPECT_COLOR_BIT, color, color_memory_, color_view);
-  make_image(kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
-             depth, depth_memory_, depth_view);
+  make_image(kDepthFormat,
+             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+             VK_IMAGE_ASPECT_DEPTH_BIT, depth, depth_memory_, depth_view);
 
   // Readback buffer: host-visible and coherent, persistently mapped.
   VkBufferCreateInfo bi{};

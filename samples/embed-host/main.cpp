@@ -11,6 +11,7 @@
 #include <snell/effect.hpp>
 #include <snell/math.hpp>
 #include <snell/readback.hpp>
+#include <snell/snapshot.hpp>
 
 // Sanitizer builds only: lets LeakSanitizer attribute the Vulkan driver's own leaks.
 #include "../../tests/sanitizers/pin_vulkan_libraries.hpp"
@@ -111,11 +112,46 @@ bool env_flag(const char* name) {
          (std::strcmp(v, "1") == 0 || std::strcmp(v, "true") == 0 || std::strcmp(v, "on") == 0);
 }
 
-/// Records one frame into the host's command buffer: the effect's offscreen passes (outside
-/// any rendering), then the host's main rendering on its own images with its scene and the
-/// effect's surface, then a copy of the colour image into the readback buffer.
-void record_frame(embed::HostFrame& frame, embed::HostScene& scene, snell::Effect* effect,
-                  const snell::FrameInfo& info) {
+/// Begins the host's main rendering on its own images: `clear` clears colour and depth (the
+/// opaque phase), otherwise both are loaded (the surfaces phase, after the snapshot).
+void begin_main_rendering(VkCommandBuffer cmd, const embed::HostFrame& frame, bool clear) {
+  VkRenderingAttachmentInfo color{};
+  color.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+  color.imageView = frame.color_view;
+  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  std::memcpy(color.clearValue.color.float32, embed::HostScene::kSkyClear, sizeof(float) * 4);
+  VkRenderingAttachmentInfo depth{};
+  depth.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+  depth.imageView = frame.depth_view;
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE; // the snapshot and the surfaces read it
+  depth.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingInfo rendering{};
+  rendering.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
+  rendering.renderArea = {{0, 0}, frame.extent};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = 1;
+  rendering.pColorAttachments = &color;
+  rendering.pDepthAttachment = &depth;
+  vkCmdBeginRendering(cmd, &rendering);
+  // Standard, positive-height viewport: the projection is y-flipped (docs/conventions.md).
+  const VkViewport viewport{0.0f, 0.0f, float(frame.extent.width), float(frame.extent.height),
+                            0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, frame.extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+/// Records one frame into the host's command buffer in Snell's frame phases: the effect's
+/// offscreen passes (outside any rendering), the host's opaque scene on its own images, the
+/// scene snapshot (one call), the effect's surface over the loaded colour and depth, then a
+/// copy of the colour image into the readback buffer. Snell errors are returned.
+snell::Result<void> record_frame(embed::HostFrame& frame, embed::HostScene& scene,
+                                 snell::SceneSnapshot& snapshot, snell::Effect* effect,
+                                 const snell::FrameInfo& info) {
   const VkCommandBuffer cmd = frame.cmd;
   VkCommandBufferBeginInfo begin{};
   begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -124,8 +160,9 @@ void record_frame(embed::HostFrame& frame, embed::HostScene& scene, snell::Effec
 
   // 1. The effect's passes: they render the host's scene into the effect's own targets (which
   //    they begin and end themselves) and leave them in SHADER_READ_ONLY_OPTIMAL.
+  snell::Result<void> result;
   if (effect != nullptr) {
-    effect->record_passes(cmd, scene);
+    result = effect->record_passes(cmd, info, scene);
   }
 
   // 2. The host's own attachments: UNDEFINED (contents discarded) -> attachment layouts, after
@@ -159,38 +196,30 @@ void record_frame(embed::HostFrame& frame, embed::HostScene& scene, snell::Effec
   dep.pImageMemoryBarriers = to_attachment;
   vkCmdPipelineBarrier2(cmd, &dep);
 
-  // 3. The host's main rendering: sky-coloured clear, its scene, then the water surface.
-  VkRenderingAttachmentInfo color{};
-  color.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-  color.imageView = frame.color_view;
-  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  std::memcpy(color.clearValue.color.float32, embed::HostScene::kSkyClear, sizeof(float) * 4);
-  VkRenderingAttachmentInfo depth{};
-  depth.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-  depth.imageView = frame.depth_view;
-  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
-  VkRenderingInfo rendering{};
-  rendering.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
-  rendering.renderArea = {{0, 0}, frame.extent};
-  rendering.layerCount = 1;
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachments = &color;
-  rendering.pDepthAttachment = &depth;
-  vkCmdBeginRendering(cmd, &rendering);
-  // Standard, positive-height viewport: the projection is y-flipped (docs/conventions.md).
-  const VkViewport viewport{0.0f, 0.0f, float(frame.extent.width), float(frame.extent.height),
-                            0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, frame.extent};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  scene.draw_scene(cmd, info.main_view);
-  if (effect != nullptr) {
-    effect->record_draw(cmd, info); // same formats as EffectCreateInfo; samples its targets
+  // 3. Opaque: the host's scene on its own attachments (sky-coloured clear).
+  begin_main_rendering(cmd, frame, true);
+  if (auto r = scene.draw_scene(cmd, info.main_view); !r && result) {
+    result = r;
+  }
+  vkCmdEndRendering(cmd);
+
+  // 4. Snapshot: one call copies colour (with mips) and depth for every effect that reads it.
+  if (effect != nullptr && effect->wants_snapshot() && result) {
+    snell::SnapshotSource source;
+    source.color = frame.color;
+    source.color_format = embed::HostFrame::kColorFormat;
+    source.color_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    source.depth = frame.depth;
+    source.depth_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    source.extent = frame.extent;
+    source.view_proj = info.main_view.proj * info.main_view.view;
+    result = snapshot.record(cmd, source, info.frame_index);
+  }
+
+  // 5. Surfaces: the water over the loaded colour and depth.
+  begin_main_rendering(cmd, frame, false);
+  if (effect != nullptr && result) {
+    result = effect->record_draw(cmd, info); // same formats as EffectCreateInfo
   }
   vkCmdEndRendering(cmd);
 
@@ -228,6 +257,7 @@ void record_frame(embed::HostFrame& frame, embed::HostScene& scene, snell::Effec
   dep.pBufferMemoryBarriers = &to_host;
   vkCmdPipelineBarrier2(cmd, &dep);
   embed::vk_check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  return result;
 }
 
 /// Prints a Snell error and returns exit code 1.
@@ -288,6 +318,12 @@ int run(const Options& o, embed::ValidationLog& log) {
   scene.init(device, water);
   embed::HostFrame frame;
   frame.init(device, {o.width, o.height});
+  // One scene snapshot for all effects of a frame (this host waits for each frame: 1 in flight).
+  auto snapshot =
+      snell::SceneSnapshot::create(*context, snell::SnapshotDesc{.frames_in_flight = 1});
+  if (!snapshot) {
+    return snell_failure("SceneSnapshot::create", snapshot.error());
+  }
 
   // --- The water effect, created by name through the host's registry. -------------------------
   snell::EffectRegistry registry;
@@ -298,7 +334,8 @@ int run(const Options& o, embed::ValidationLog& log) {
   create_info.context = &*context;
   create_info.color_format = embed::HostFrame::kColorFormat; // the host's main rendering
   create_info.depth_format = embed::HostFrame::kDepthFormat;
-  create_info.scene = nullptr; // no snell::Scene: parameters come from set_param
+  create_info.frames_in_flight = 1; // this host waits for each frame before the next
+  create_info.scene = nullptr;      // no snell::Scene: parameters come from set_param
   auto created = registry.create("water", create_info);
   if (!created) {
     return snell_failure("create water", created.error());
@@ -328,20 +365,22 @@ int run(const Options& o, embed::ValidationLog& log) {
   info.main_view.depth_format = embed::HostFrame::kDepthFormat;
   info.light = scene.light;
   info.timer = nullptr;
+  info.snapshot = &*snapshot; // this host records a snapshot when an effect wants one
 
   auto render = [&](bool with_effect) -> int {
+    ++info.frame_index;
     if (with_effect) {
-      effect->update(info); // creates or resizes its targets; may wait for the device
-      if (const snell::Error* e = effect->error()) {
-        return snell_failure("water update", *e);
+      // Creates or resizes its targets; replaced ones are destroyed frames_in_flight later.
+      if (auto r = effect->update(info); !r) {
+        return snell_failure("water update", r.error());
       }
     }
-    record_frame(frame, scene, with_effect ? effect.get() : nullptr, info);
-    if (!scene.error().empty()) {
-      std::fprintf(stderr, "snell-embed-host: %s\n", scene.error().c_str());
-      return 1;
+    auto recorded =
+        record_frame(frame, scene, *snapshot, with_effect ? effect.get() : nullptr, info);
+    frame.submit_and_wait(); // the command buffer is complete even when a Snell call failed
+    if (!recorded) {
+      return snell_failure("record_frame", recorded.error());
     }
-    frame.submit_and_wait();
     return 0;
   };
   for (std::uint32_t i = 0; i < o.frames; ++i) {

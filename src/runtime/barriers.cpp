@@ -32,7 +32,7 @@ void barrier(VkCommandBuffer cmd, const ImageBarrier* barriers, std::uint32_t co
 
 void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view,
                      VkExtent2D extent, std::uint32_t view_mask, const float* clear,
-                     float clear_depth, bool store_depth) {
+                     float clear_depth, bool store_depth, bool load_depth) {
   auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   color.imageView = color_view;
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -44,7 +44,7 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView de
   auto depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   depth.imageView = depth_view;
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.loadOp = load_depth ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   depth.storeOp = store_depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.clearValue.depthStencil = {clear_depth, 0};
   auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);

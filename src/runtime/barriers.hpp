@@ -35,10 +35,11 @@ inline constexpr VkAccessFlags2 kReadAccess =
 
 /// vkCmdBeginRendering on one colour view (+ optional depth view) over the whole `extent`,
 /// plus a standard full viewport and scissor. `clear` = nullptr loads the colour instead of
-/// clearing it; depth is always cleared to `clear_depth` and stored when `store_depth`.
+/// clearing it; depth is cleared to `clear_depth` (loaded when `load_depth`) and stored when
+/// `store_depth`.
 void begin_rendering(VkCommandBuffer cmd, VkImageView color, VkImageView depth, VkExtent2D extent,
                      std::uint32_t view_mask, const float* clear, float clear_depth,
-                     bool store_depth);
+                     bool store_depth, bool load_depth = false);
 
 /// Generates mip levels 1..mips-1 of `layers` layers by linear blits from level 0.
 /// Expects level 0 in `level0_layout` after writes in `src_stage`/`src_access`; leaves every

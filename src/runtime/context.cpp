@@ -283,6 +283,19 @@ Result<void> init_common(Context::Impl& impl) {
   SNELL_VK_TRY(vkCreateCommandPool(impl.device, &pci, nullptr, &impl.pool), "context command pool");
   VkFenceCreateInfo fci = vk_init<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
   SNELL_VK_TRY(vkCreateFence(impl.device, &fci, nullptr, &impl.fence), "context fence");
+  for (std::uint32_t i = 0; i < kStandardSamplerCount; ++i) {
+    const auto which = static_cast<StandardSampler>(i);
+    auto ci = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    const bool linear = which != StandardSampler::nearest_clamp;
+    ci.magFilter = ci.minFilter = linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    ci.mipmapMode = linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    ci.addressModeU = ci.addressModeV = ci.addressModeW =
+        which == StandardSampler::linear_repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+                                                : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    ci.maxLod = linear ? VK_LOD_CLAMP_NONE : 0.0f;
+    SNELL_VK_TRY(vkCreateSampler(impl.device, &ci, nullptr, &impl.samplers[i]),
+                 "context standard sampler");
+  }
   return {};
 }
 
@@ -293,6 +306,11 @@ Context::Impl::~Impl() {
     vkDeviceWaitIdle(device);
     if (fence != VK_NULL_HANDLE) {
       vkDestroyFence(device, fence, nullptr);
+    }
+    for (VkSampler sampler : samplers) {
+      if (sampler != VK_NULL_HANDLE) {
+        vkDestroySampler(device, sampler, nullptr);
+      }
     }
     if (pool != VK_NULL_HANDLE) {
       vkDestroyCommandPool(device, pool, nullptr);
@@ -495,6 +513,14 @@ std::uint32_t Context::validation_warning_count() const {
 std::vector<std::string> Context::validation_messages() const {
   std::lock_guard<std::mutex> lock(impl_->messages_mutex);
   return impl_->messages;
+}
+
+const VkPhysicalDeviceLimits& Context::limits() const {
+  return impl_->limits;
+}
+
+VkSampler Context::sampler(StandardSampler which) const {
+  return impl_->samplers[static_cast<std::uint32_t>(which) % kStandardSamplerCount];
 }
 
 Result<void> Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {

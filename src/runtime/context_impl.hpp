@@ -21,6 +21,7 @@ struct Context::Impl {
   DeviceInfo info;
   VkPhysicalDeviceMemoryProperties memory{};
   VkPhysicalDeviceLimits limits{};
+  VkSampler samplers[kStandardSamplerCount] = {}; ///< Indexed by StandardSampler.
 
   // Validation (owned instances only).
   bool validation = false;

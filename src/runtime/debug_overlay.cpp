@@ -7,7 +7,10 @@
 
 #include <glm/vec4.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
+#include <vector>
 
 namespace snell::detail {
 
@@ -40,16 +43,14 @@ Result<DebugOverlay> DebugOverlay::create(const Context::Impl& ctx, VkFormat col
     }
     return !vert ? vert.error() : frag.error();
   }
-  GraphicsPipelineDesc desc;
-  desc.vertex = *vert;
-  desc.fragment = *frag;
-  desc.layout = o.layout_;
-  desc.color_format = color_format;
+  RasterState desc;
+  desc.color_formats = {color_format};
   desc.vertex_input = false;
   desc.depth_test = false;
   desc.depth_write = false;
   desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-  auto pipeline = create_graphics_pipeline(d, desc, "debug overlay pipeline");
+  auto pipeline =
+      create_graphics_pipeline(d, *vert, *frag, o.layout_, desc, "debug overlay pipeline");
   vkDestroyShaderModule(d, *vert, nullptr);
   vkDestroyShaderModule(d, *frag, nullptr);
   if (!pipeline) {
@@ -59,20 +60,24 @@ Result<DebugOverlay> DebugOverlay::create(const Context::Impl& ctx, VkFormat col
   auto sci = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
   sci.magFilter = sci.minFilter = VK_FILTER_LINEAR;
   sci.addressModeU = sci.addressModeV = sci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  sci.maxLod = VK_LOD_CLAMP_NONE; // mip_level thumbnails pick a level with textureLod
   SNELL_VK_TRY(vkCreateSampler(d, &sci, nullptr, &o.sampler_), "debug overlay sampler");
   sci.magFilter = sci.minFilter = VK_FILTER_NEAREST;
+  sci.maxLod = 0.0f;
   SNELL_VK_TRY(vkCreateSampler(d, &sci, nullptr, &o.depth_sampler_), "debug overlay sampler");
-  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kMaxThumbnails};
   auto dpci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-  dpci.maxSets = 4;
+  dpci.maxSets = kMaxThumbnails;
   dpci.poolSizeCount = 1;
   dpci.pPoolSizes = &size;
   SNELL_VK_TRY(vkCreateDescriptorPool(d, &dpci, nullptr, &o.pool_), "debug overlay pool");
-  const VkDescriptorSetLayout layouts[4] = {o.set_layout_, o.set_layout_, o.set_layout_,
-                                            o.set_layout_};
+  VkDescriptorSetLayout layouts[kMaxThumbnails];
+  for (VkDescriptorSetLayout& l : layouts) {
+    l = o.set_layout_;
+  }
   auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
   ai.descriptorPool = o.pool_;
-  ai.descriptorSetCount = 4;
+  ai.descriptorSetCount = kMaxThumbnails;
   ai.pSetLayouts = layouts;
   SNELL_VK_TRY(vkAllocateDescriptorSets(d, &ai, o.sets_), "debug overlay sets");
   return o;
@@ -109,21 +114,40 @@ DebugOverlay::~DebugOverlay() {
   vkDestroyDescriptorSetLayout(d, set_layout_, nullptr);
 }
 
-void DebugOverlay::draw(VkCommandBuffer cmd, std::span<const DebugTarget> targets,
-                        std::uint32_t width, std::uint32_t height) {
+void DebugOverlay::draw(VkCommandBuffer cmd, Span<const DebugTarget> targets, std::uint32_t width,
+                        std::uint32_t height) {
   (void)width;
   (void)height;
-  // Corners clockwise from the top-left, in NDC (y down with a standard viewport), each thumbnail
-  // a quarter of the output with a small margin.
-  const glm::vec4 rects[4] = {{-0.98f, -0.98f, -0.48f, -0.48f},
-                              {0.48f, -0.98f, 0.98f, -0.48f},
-                              {0.48f, 0.48f, 0.98f, 0.98f},
-                              {-0.98f, 0.48f, -0.48f, 0.98f}};
+  const std::size_t n = std::min<std::size_t>(targets.size(), kMaxThumbnails);
+  // Rectangles in NDC (y down with a standard viewport). Up to four: the corners, clockwise
+  // from the top-left, a quarter of the output each. More: a grid over the whole output.
+  std::vector<glm::vec4> rects;
+  if (n <= 4) {
+    rects = {{-0.98f, -0.98f, -0.48f, -0.48f},
+             {0.48f, -0.98f, 0.98f, -0.48f},
+             {0.48f, 0.48f, 0.98f, 0.98f},
+             {-0.98f, 0.48f, -0.48f, 0.98f}};
+  } else {
+    const auto cols = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+    const std::size_t rows = (n + cols - 1) / cols;
+    const float cw = 2.0f / static_cast<float>(cols);
+    const float rh = 2.0f / static_cast<float>(rows);
+    for (std::size_t i = 0; i < n; ++i) {
+      const float x0 = -1.0f + cw * static_cast<float>(i % cols);
+      const float y0 = -1.0f + rh * static_cast<float>(i / cols);
+      rects.emplace_back(x0 + 0.01f, y0 + 0.01f, x0 + cw - 0.01f, y0 + rh - 0.01f);
+    }
+  }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
   vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
-  for (std::size_t i = 0; i < targets.size() && i < 4; ++i) {
-    const VkDescriptorImageInfo image{targets[i].depth ? depth_sampler_ : sampler_, targets[i].view,
+  for (std::size_t i = 0; i < n; ++i) {
+    const DebugTarget& t = targets[i];
+    if (t.view == VK_NULL_HANDLE) {
+      continue;
+    }
+    const bool depth = t.kind == DebugKind::depth;
+    const VkDescriptorImageInfo image{depth ? depth_sampler_ : sampler_, t.view,
                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     auto write = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     write.dstSet = sets_[i];
@@ -135,7 +159,9 @@ void DebugOverlay::draw(VkCommandBuffer cmd, std::span<const DebugTarget> target
     vkUpdateDescriptorSets(ctx_->device, 1, &write, 0, nullptr);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &sets_[i], 0,
                             nullptr);
-    const glm::vec4 push[2] = {rects[i], glm::vec4(targets[i].depth ? 1.0f : 0.0f, 0, 0, 0)};
+    // params: x = depth visualisation, y = the mip level shown (a view of all levels).
+    const float lod = t.kind == DebugKind::mip_level ? static_cast<float>(t.mip) : 0.0f;
+    const glm::vec4 push[2] = {rects[i], glm::vec4(depth ? 1.0f : 0.0f, lod, 0, 0)};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(push), push);
     vkCmdDraw(cmd, 4, 1, 0, 0);

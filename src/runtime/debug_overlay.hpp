@@ -6,8 +6,6 @@
 
 #include "context_impl.hpp"
 
-#include <span>
-
 namespace snell::detail {
 
 class DebugOverlay {
@@ -20,10 +18,13 @@ public:
   DebugOverlay& operator=(const DebugOverlay&) = delete;
   ~DebugOverlay();
 
-  /// Inside an overlay rendering: up to 4 thumbnails, a quarter of the width each, placed
-  /// clockwise from the top-left corner, aspect kept from the output.
-  void draw(VkCommandBuffer cmd, std::span<const DebugTarget> targets, std::uint32_t width,
+  /// Inside an overlay rendering: every target as a thumbnail. Up to 4 go into the corners
+  /// (a quarter of the output each, clockwise from the top-left); more are laid out in a grid
+  /// of ceil(sqrt(n)) columns over the whole output, in order. At most kMaxThumbnails (64).
+  void draw(VkCommandBuffer cmd, Span<const DebugTarget> targets, std::uint32_t width,
             std::uint32_t height);
+
+  static constexpr std::uint32_t kMaxThumbnails = 64;
 
 private:
   void swap(DebugOverlay& o) noexcept;
@@ -34,7 +35,7 @@ private:
   VkSampler sampler_ = VK_NULL_HANDLE;       ///< Linear, for colour.
   VkSampler depth_sampler_ = VK_NULL_HANDLE; ///< Nearest: depth formats need not filter.
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet sets_[4] = {};
+  VkDescriptorSet sets_[kMaxThumbnails] = {};
 };
 
 } // namespace snell::detail

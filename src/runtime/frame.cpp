@@ -2,11 +2,14 @@
 #include <snell/frame.hpp>
 #include <snell/math.hpp>
 #include <snell/readback.hpp>
+#include <snell/scene_renderer.hpp>
+#include <snell/snapshot.hpp>
 
 #include "context_impl.hpp"
 #include "debug_overlay.hpp"
 #include "vk_util.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace snell {
@@ -27,19 +30,22 @@ SceneView make_main_view(const CameraDesc& camera, std::uint32_t width, std::uin
 }
 
 struct FrameRenderer::Impl {
+  const Context* context = nullptr;
   const Context::Impl* ctx = nullptr;
   FrameDesc desc;
   RenderTarget target;
   GpuTimer timer;
+  SceneSnapshot snapshot;
   detail::DebugOverlay overlay;
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   VkFence fence = VK_NULL_HANDLE;
+  std::uint64_t frame_index = 0;
   ~Impl() {
     if (ctx == nullptr) {
       return;
     }
-    vkDeviceWaitIdle(ctx->device);
+    vkDeviceWaitIdle(ctx->device); // the renderer owns this frame's objects (not the host's)
     vkDestroyFence(ctx->device, fence, nullptr);
     vkDestroyCommandPool(ctx->device, pool, nullptr);
   }
@@ -52,10 +58,16 @@ FrameRenderer::~FrameRenderer() = default;
 
 Result<FrameRenderer> FrameRenderer::create(const Context& ctx, const FrameDesc& desc) {
   auto impl = std::make_unique<Impl>();
+  impl->context = &ctx;
   impl->ctx = ctx.impl();
   impl->desc = desc;
-  auto target = RenderTarget::create(
-      ctx, RenderTargetDesc{desc.width, desc.height, desc.color, true, false, "frame output"});
+  RenderTargetDesc td;
+  td.width = desc.width;
+  td.height = desc.height;
+  td.color = desc.color;
+  td.depth = true;
+  td.debug_name = "frame output";
+  auto target = RenderTarget::create(ctx, td);
   if (!target) {
     return target.error();
   }
@@ -65,6 +77,11 @@ Result<FrameRenderer> FrameRenderer::create(const Context& ctx, const FrameDesc&
     return timer.error();
   }
   impl->timer = std::move(*timer);
+  auto snapshot = SceneSnapshot::create(ctx, SnapshotDesc{});
+  if (!snapshot) {
+    return snapshot.error();
+  }
+  impl->snapshot = std::move(*snapshot);
   if (desc.debug_targets) {
     auto overlay = detail::DebugOverlay::create(*ctx.impl(), impl->target.vk_color_format());
     if (!overlay) {
@@ -86,14 +103,57 @@ Result<FrameRenderer> FrameRenderer::create(const Context& ctx, const FrameDesc&
   return FrameRenderer(std::move(impl));
 }
 
+namespace {
+
+/// "<type>: <message>", keeping the code and VkResult.
+Error effect_error(const Effect& effect, const Error& e) {
+  Error out = e;
+  out.message = std::string(effect.type()) + ": " + e.message;
+  return out;
+}
+
+} // namespace
+
 Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& camera, float time,
-                                         const FrameHooks& hooks) {
+                                         Span<Effect* const> effects,
+                                         const DirectionalLight& light) {
   Impl& s = *impl_;
   const auto start = std::chrono::steady_clock::now();
+  FrameStats stats;
+  stats.frame_index = ++s.frame_index;
   SceneView view = make_main_view(camera, s.desc.width, s.desc.height);
   view.time = time;
   view.color_format = s.target.vk_color_format();
-  view.depth_format = VK_FORMAT_D32_SFLOAT;
+  view.depth_format = s.target.depth_format();
+  FrameInfo info;
+  info.time = time;
+  info.frame_index = s.frame_index;
+  info.main_view = view;
+  info.light = light;
+  info.timer = &s.timer;
+  info.snapshot = &s.snapshot; // copied in phase 4 when an effect wants it
+
+  // Phase 1: update. A failing effect is left out of the frame before anything is recorded.
+  std::vector<Effect*> active;
+  std::vector<int> hidden;
+  for (Effect* e : effects) {
+    if (auto r = e->update(info); !r) {
+      stats.effect_errors.push_back(effect_error(*e, r.error()));
+      continue;
+    }
+    active.push_back(e);
+    for (const int object : e->drawn_objects()) {
+      hidden.push_back(object);
+    }
+  }
+  if (auto* renderer = dynamic_cast<SceneRenderer*>(&source)) {
+    renderer->set_hidden_objects(hidden);
+  }
+  const auto drop = [&](Effect* e, const Error& error) {
+    stats.effect_errors.push_back(effect_error(*e, error));
+    active.erase(std::find(active.begin(), active.end(), e));
+  };
+
   VkCommandBuffer cmd = s.cmd;
   SNELL_VK_TRY(vkResetCommandBuffer(cmd, 0), "frame command buffer");
   auto bi = vk_init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
@@ -101,25 +161,73 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
   SNELL_VK_TRY(vkBeginCommandBuffer(cmd, &bi), "frame command buffer");
   s.timer.reset(cmd);
   s.timer.begin(cmd, "frame");
-  if (hooks.offscreen) {
-    hooks.offscreen(cmd, s.timer, view);
+
+  // Phase 2: offscreen passes.
+  for (Effect* e : std::vector<Effect*>(active)) {
+    if (auto r = e->record_passes(cmd, info, source); !r) {
+      drop(e, r.error());
+    }
   }
-  s.timer.begin(cmd, "main");
-  const glm::vec3 clear_rgb(0.0f);
-  const float clear[4] = {clear_rgb.r, clear_rgb.g, clear_rgb.b, 1.0f};
+
+  // Phase 3: the opaque scene.
+  s.timer.begin(cmd, "opaque");
+  const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   s.target.begin_rendering(cmd, clear);
-  source.draw_scene(cmd, view);
-  if (hooks.in_main) {
-    hooks.in_main(cmd, view);
+  Result<void> scene_drawn = source.draw_scene(cmd, view);
+  s.target.end_rendering(cmd);
+  s.timer.end(cmd);
+
+  // Phase 4: one snapshot for every effect that reads it.
+  const bool wants_snapshot = std::any_of(active.begin(), active.end(),
+                                          [](const Effect* e) { return e->wants_snapshot(); });
+  if (wants_snapshot && scene_drawn) {
+    s.timer.begin(cmd, "snapshot");
+    SnapshotSource src;
+    src.color = s.target.color_image();
+    src.color_format = s.target.vk_color_format();
+    src.color_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    src.depth = s.target.depth_image();
+    src.depth_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    src.extent = {s.desc.width, s.desc.height};
+    src.view_proj = view.proj * view.view;
+    auto r = s.snapshot.record(cmd, src, s.frame_index);
+    s.timer.end(cmd);
+    if (r) {
+      stats.snapshot_copies = 1;
+    } else {
+      scene_drawn = r; // a snapshot that cannot be made fails the frame, like the scene
+    }
+  }
+
+  // Phase 5: effect surfaces over the opaque colour and depth.
+  s.timer.begin(cmd, "surfaces");
+  s.target.continue_rendering(cmd);
+  for (Effect* e : std::vector<Effect*>(active)) {
+    if (auto r = e->record_draw(cmd, info); !r) {
+      drop(e, r.error());
+    }
   }
   s.target.end_rendering(cmd);
   s.timer.end(cmd);
+
+  // Phase 6: debug thumbnails of every effect's targets.
   if (s.desc.debug_targets) {
     std::vector<DebugTarget> thumbs;
-    if (hooks.debug_targets) {
-      thumbs = hooks.debug_targets();
+    for (const Effect* e : active) {
+      for (const DebugTarget& t : e->debug_targets()) {
+        thumbs.push_back(t);
+      }
     }
-    thumbs.push_back(DebugTarget{"depth", s.target.depth_view(), true});
+    if (stats.snapshot_copies > 0) {
+      for (const DebugTarget& t : s.snapshot.debug_targets()) {
+        thumbs.push_back(t);
+      }
+    }
+    DebugTarget depth;
+    depth.name = "depth";
+    depth.kind = DebugKind::depth;
+    depth.view = s.target.depth_view();
+    thumbs.push_back(depth);
     s.timer.begin(cmd, "debug_targets");
     s.target.begin_overlay(cmd);
     s.overlay.draw(cmd, thumbs, s.desc.width, s.desc.height);
@@ -136,7 +244,9 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
   SNELL_VK_TRY(vkResetFences(s.ctx->device, 1, &s.fence), "frame fence");
   SNELL_VK_TRY(vkQueueSubmit2(s.ctx->queue, 1, &si, s.fence), "frame submit");
   SNELL_VK_TRY(vkWaitForFences(s.ctx->device, 1, &s.fence, VK_TRUE, UINT64_MAX), "frame wait");
-  FrameStats stats;
+  if (!scene_drawn) {
+    return scene_drawn.error();
+  }
   stats.cpu_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   auto passes = s.timer.read();
@@ -147,47 +257,6 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
   for (const PassTime& p : stats.passes) {
     if (p.name == "frame") {
       stats.gpu_ms = p.ms;
-    }
-  }
-  return stats;
-}
-
-Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& camera, float time,
-                                         std::span<Effect* const> effects,
-                                         const DirectionalLight& light) {
-  FrameInfo info;
-  info.time = time;
-  info.light = light;
-  FrameHooks hooks;
-  hooks.offscreen = [&](VkCommandBuffer cmd, GpuTimer& timer, const SceneView& view) {
-    info.main_view = view;
-    info.timer = &timer;
-    for (Effect* e : effects) {
-      e->update(info);
-      e->record_passes(cmd, source);
-    }
-  };
-  hooks.in_main = [&](VkCommandBuffer cmd, const SceneView& /*view*/) {
-    for (Effect* e : effects) {
-      e->record_draw(cmd, info);
-    }
-  };
-  hooks.debug_targets = [&] {
-    std::vector<DebugTarget> out;
-    for (Effect* e : effects) {
-      for (const DebugTarget& t : e->debug_targets()) {
-        out.push_back(t);
-      }
-    }
-    return out;
-  };
-  auto stats = render(source, camera, time, hooks);
-  if (!stats) {
-    return stats;
-  }
-  for (Effect* e : effects) {
-    if (const Error* err = e->error()) {
-      return *err;
     }
   }
   return stats;

@@ -1,5 +1,6 @@
 // Parameter schemas: validation and parsing of effect parameters (data-driven set_param).
 #include <snell/effect.hpp>
+#include <snell/param_table.hpp>
 
 #include <cerrno>
 #include <cmath>
@@ -115,6 +116,22 @@ std::string ParamSchema::key_list() const {
     out += p.name;
   }
   return out;
+}
+
+Error unknown_param_error(const ParamSchema& schema, std::string_view key) {
+  return fail(ErrorCode::unknown_name, schema.effect + ": unknown parameter '" + std::string(key) +
+                                           "'; valid: " + schema.key_list());
+}
+
+Error enum_index_error(const ParamSchema& schema, const ParamSpec& spec, long long index) {
+  std::ostringstream os;
+  os << where(schema, spec) << " = " << index << " is outside [0, "
+     << static_cast<long long>(spec.choices.size()) - 1 << "] (choices:";
+  for (std::size_t i = 0; i < spec.choices.size(); ++i) {
+    os << ' ' << i << '=' << spec.choices[i];
+  }
+  os << ')';
+  return fail(ErrorCode::invalid_argument, os.str());
 }
 
 Result<void> validate_param(const ParamSchema& schema, const ParamSpec& spec,

@@ -1,36 +1,44 @@
 #include <snell/pipeline.hpp>
 
+#include <snell/context.hpp>
+
 #include <snell/scene.hpp>
 
 #include "vk_util.hpp"
 
 #include <cstddef>
+#include <string>
+#include <utility>
 
 namespace snell {
 
 using detail::vk_init;
 
-Result<VkShaderModule> create_shader_module(VkDevice device, std::span<const std::uint32_t> code,
+Result<VkShaderModule> create_shader_module(VkDevice device, Span<const std::uint32_t> code,
                                             std::string_view name) {
+  if (code.empty()) {
+    return fail(ErrorCode::invalid_argument, std::string(name) + ": no SPIR-V code");
+  }
   auto ci = vk_init<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-  ci.codeSize = code.size_bytes();
+  ci.codeSize = code.size() * sizeof(std::uint32_t);
   ci.pCode = code.data();
   VkShaderModule module = VK_NULL_HANDLE;
   SNELL_VK_TRY(vkCreateShaderModule(device, &ci, nullptr, &module), name);
   return module;
 }
 
-Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& desc,
-                                            std::string_view name) {
+Result<VkPipeline> create_graphics_pipeline(VkDevice device, VkShaderModule vertex,
+                                            VkShaderModule fragment, VkPipelineLayout layout,
+                                            const RasterState& desc, std::string_view name) {
   VkPipelineShaderStageCreateInfo stages[2];
   stages[0] =
       vk_init<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = desc.vertex;
+  stages[0].module = vertex;
   stages[0].pName = "main";
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = desc.fragment;
+  stages[1].module = fragment;
 
   const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   const VkVertexInputAttributeDescription attributes[] = {
@@ -61,7 +69,7 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
   // depthClampEnable stays false: oblique near-plane clipping relies on real near clipping.
   auto ms = vk_init<VkPipelineMultisampleStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-  ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  ms.rasterizationSamples = desc.samples;
   auto ds = vk_init<VkPipelineDepthStencilStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
   ds.depthTestEnable = desc.depth_test && desc.depth_format != VK_FORMAT_UNDEFINED;
@@ -79,10 +87,11 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
     blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     blend.alphaBlendOp = VK_BLEND_OP_ADD;
   }
+  const std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend);
   auto cb = vk_init<VkPipelineColorBlendStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-  cb.attachmentCount = 1;
-  cb.pAttachments = &blend;
+  cb.attachmentCount = static_cast<std::uint32_t>(blends.size());
+  cb.pAttachments = blends.data();
   const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
                                     VK_DYNAMIC_STATE_CULL_MODE, VK_DYNAMIC_STATE_FRONT_FACE};
   auto dyn = vk_init<VkPipelineDynamicStateCreateInfo>(
@@ -92,8 +101,8 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
   auto rendering =
       vk_init<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
   rendering.viewMask = desc.view_mask;
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &desc.color_format;
+  rendering.colorAttachmentCount = static_cast<std::uint32_t>(desc.color_formats.size());
+  rendering.pColorAttachmentFormats = desc.color_formats.data();
   rendering.depthAttachmentFormat = desc.depth_format;
   auto ci = vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
   ci.pNext = &rendering;
@@ -107,10 +116,140 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, const GraphicsPipel
   ci.pDepthStencilState = &ds;
   ci.pColorBlendState = &cb;
   ci.pDynamicState = &dyn;
-  ci.layout = desc.layout;
+  ci.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   SNELL_VK_TRY(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline), name);
   return pipeline;
+}
+
+namespace {
+
+Result<VkPipelineLayout> create_layout(VkDevice device,
+                                       const std::vector<VkDescriptorSetLayout>& set_layouts,
+                                       const std::vector<VkPushConstantRange>& push_constants,
+                                       const std::string& label) {
+  auto ci = vk_init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+  ci.setLayoutCount = static_cast<std::uint32_t>(set_layouts.size());
+  ci.pSetLayouts = set_layouts.data();
+  ci.pushConstantRangeCount = static_cast<std::uint32_t>(push_constants.size());
+  ci.pPushConstantRanges = push_constants.data();
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  SNELL_VK_TRY(vkCreatePipelineLayout(device, &ci, nullptr, &layout), label + " layout");
+  return layout;
+}
+
+/// Destroys the modules when leaving scope (they are only needed during pipeline creation).
+struct ModuleScope {
+  VkDevice device;
+  VkShaderModule modules[2] = {};
+  ~ModuleScope() {
+    for (VkShaderModule m : modules) {
+      if (m != VK_NULL_HANDLE) {
+        vkDestroyShaderModule(device, m, nullptr);
+      }
+    }
+  }
+};
+
+} // namespace
+
+Result<Pipeline> Pipeline::create(const Context& ctx, const GraphicsPipelineDesc& desc) {
+  const std::string label = desc.label != nullptr ? desc.label : "graphics pipeline";
+  if (desc.vertex.empty() || desc.fragment.empty()) {
+    return fail(ErrorCode::invalid_argument,
+                label + ": GraphicsPipelineDesc needs vertex and fragment SPIR-V");
+  }
+  const VkDevice device = ctx.device();
+  Pipeline p;
+  p.device_ = device;
+  p.bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  auto layout = create_layout(device, desc.set_layouts, desc.push_constants, label);
+  if (!layout) {
+    return layout.error();
+  }
+  p.layout_ = *layout;
+  ModuleScope scope{device};
+  auto vert = create_shader_module(device, desc.vertex, label + " vertex shader");
+  if (!vert) {
+    return vert.error();
+  }
+  scope.modules[0] = *vert;
+  auto frag = create_shader_module(device, desc.fragment, label + " fragment shader");
+  if (!frag) {
+    return frag.error();
+  }
+  scope.modules[1] = *frag;
+  auto pipeline = create_graphics_pipeline(device, *vert, *frag, p.layout_, desc.state, label);
+  if (!pipeline) {
+    return pipeline.error();
+  }
+  p.pipeline_ = *pipeline;
+  return p;
+}
+
+Result<Pipeline> Pipeline::create(const Context& ctx, const ComputePipelineDesc& desc) {
+  const std::string label = desc.label != nullptr ? desc.label : "compute pipeline";
+  if (desc.compute.empty()) {
+    return fail(ErrorCode::invalid_argument, label + ": ComputePipelineDesc needs compute SPIR-V");
+  }
+  const VkDevice device = ctx.device();
+  Pipeline p;
+  p.device_ = device;
+  p.bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+  auto layout = create_layout(device, desc.set_layouts, desc.push_constants, label);
+  if (!layout) {
+    return layout.error();
+  }
+  p.layout_ = *layout;
+  ModuleScope scope{device};
+  auto comp = create_shader_module(device, desc.compute, label + " compute shader");
+  if (!comp) {
+    return comp.error();
+  }
+  scope.modules[0] = *comp;
+  auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+  ci.stage =
+      vk_init<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+  ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  ci.stage.module = *comp;
+  ci.stage.pName = "main";
+  ci.layout = p.layout_;
+  SNELL_VK_TRY(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_),
+               label);
+  return p;
+}
+
+Pipeline::Pipeline(Pipeline&& other) noexcept {
+  *this = std::move(other);
+}
+
+Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
+  if (this != &other) {
+    reset();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    pipeline_ = std::exchange(other.pipeline_, VK_NULL_HANDLE);
+    layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
+    bind_point_ = other.bind_point_;
+  }
+  return *this;
+}
+
+Pipeline::~Pipeline() {
+  reset();
+}
+
+void Pipeline::reset() {
+  if (device_ != VK_NULL_HANDLE) {
+    vkDestroyPipeline(device_, pipeline_, nullptr);
+    vkDestroyPipelineLayout(device_, layout_, nullptr);
+  }
+  device_ = VK_NULL_HANDLE;
+  pipeline_ = VK_NULL_HANDLE;
+  layout_ = VK_NULL_HANDLE;
+}
+
+void Pipeline::bind(VkCommandBuffer cmd) const {
+  vkCmdBindPipeline(cmd, bind_point_, pipeline_);
 }
 
 } // namespace snell

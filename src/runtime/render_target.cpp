@@ -78,7 +78,7 @@ Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTa
     ci.format = VK_FORMAT_D32_SFLOAT;
     ci.mipLevels = 1;
     ci.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-               VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+               VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (auto r = detail::create_image(ctx, ci, t.depth_, t.depth_memory_, name + " depth"); !r) {
       return r.error();
     }
@@ -89,7 +89,45 @@ Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTa
     }
     t.depth_view_ = *view;
   }
+  // Toolkit targets are samplable from creation on: a surface or the debug overlay may read a
+  // target whose pass was skipped this frame (a camera behind a mirror), which must not be an
+  // image in layout UNDEFINED. Cleared to transparent black and depth 1 (far).
+  if (auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) { t.clear_to_samplable(cmd); }); !r) {
+    return r.error();
+  }
   return t;
+}
+
+void RenderTarget::clear_to_samplable(VkCommandBuffer cmd) const {
+  ImageBarrier to_dst[2] = {
+      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+      {depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+  };
+  const std::uint32_t count = depth_ != VK_NULL_HANDLE ? 2 : 1;
+  detail::barrier(cmd, to_dst, count);
+  const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 0.0f}};
+  const VkImageSubresourceRange colors{VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1};
+  vkCmdClearColorImage(cmd, color_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &colors);
+  if (depth_ != VK_NULL_HANDLE) {
+    const VkClearDepthStencilValue far{1.0f, 0};
+    const VkImageSubresourceRange depths{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    vkCmdClearDepthStencilImage(cmd, depth_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1,
+                                &depths);
+  }
+  ImageBarrier to_read[2] = {to_dst[0], to_dst[1]};
+  for (ImageBarrier& b : to_read) {
+    b.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    b.new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    b.src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+    b.src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    b.dst_stage = detail::kReadStages;
+    b.dst_access = detail::kReadAccess;
+  }
+  detail::barrier(cmd, to_read, count);
 }
 
 RenderTarget::RenderTarget(RenderTarget&& other) noexcept {
@@ -147,6 +185,23 @@ void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
 
   detail::begin_rendering(cmd, color_level0_view_, depth_view_, {width_, height_}, 0, clear,
                           clear_depth, true);
+}
+
+void RenderTarget::continue_rendering(VkCommandBuffer cmd) const {
+  ImageBarrier barriers[2] = {
+      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT},
+      {depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+           VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT},
+  };
+  detail::barrier(cmd, barriers, depth_ != VK_NULL_HANDLE ? 2 : 1);
+  detail::begin_rendering(cmd, color_level0_view_, depth_view_, {width_, height_}, 0, nullptr, 1.0f,
+                          true, true);
 }
 
 void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {

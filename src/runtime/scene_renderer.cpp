@@ -85,7 +85,7 @@ struct SceneRenderer::Impl {
   VkShaderModule scene_vert = VK_NULL_HANDLE, scene_frag = VK_NULL_HANDLE;
   VkShaderModule sky_vert = VK_NULL_HANDLE, sky_frag = VK_NULL_HANDLE;
   std::map<std::tuple<VkFormat, VkFormat, std::uint32_t>, Pipelines> pipelines;
-  std::string error;
+  std::vector<bool> hidden; ///< Per object: drawn by an effect, left out here.
 
   ~Impl() {
     if (ctx == nullptr) {
@@ -268,7 +268,7 @@ Result<void> SceneRenderer::Impl::init(const Context& context) {
   }
 
   // Shaders.
-  auto module = [&](std::span<const std::uint32_t> code, const char* name,
+  auto module = [&](Span<const std::uint32_t> code, const char* name,
                     VkShaderModule& out) -> Result<void> {
     auto m = create_shader_module(d, code, name);
     if (!m) {
@@ -293,24 +293,22 @@ Result<const Pipelines*> SceneRenderer::Impl::pipelines_for(const SceneView& vie
   if (auto it = pipelines.find(key); it != pipelines.end()) {
     return &it->second;
   }
-  GraphicsPipelineDesc desc;
-  desc.vertex = scene_vert;
-  desc.fragment = scene_frag;
-  desc.layout = layout;
-  desc.color_format = view.color_format;
+  RasterState desc;
+  desc.color_formats = {view.color_format};
   desc.depth_format = view.depth_format;
   desc.view_mask = view.view_mask;
   Pipelines p;
-  auto opaque = create_graphics_pipeline(ctx->device, desc, "scene opaque pipeline");
+  auto opaque = create_graphics_pipeline(ctx->device, scene_vert, scene_frag, layout, desc,
+                                         "scene opaque pipeline");
   desc.alpha_blend = true;
   desc.depth_write = false;
-  auto blend = create_graphics_pipeline(ctx->device, desc, "scene blend pipeline");
-  desc.vertex = sky_vert;
-  desc.fragment = sky_frag;
+  auto blend = create_graphics_pipeline(ctx->device, scene_vert, scene_frag, layout, desc,
+                                        "scene blend pipeline");
   desc.vertex_input = false;
   desc.alpha_blend = false;
   desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
-  auto sky = create_graphics_pipeline(ctx->device, desc, "sky pipeline");
+  auto sky =
+      create_graphics_pipeline(ctx->device, sky_vert, sky_frag, layout, desc, "sky pipeline");
   if (!opaque || !blend || !sky) {
     for (auto* r : {&opaque, &blend, &sky}) {
       if (*r) {
@@ -350,16 +348,21 @@ Result<SceneRenderer> SceneRenderer::create(const Context& ctx, const Scene& sce
 const Scene& SceneRenderer::scene() const {
   return impl_->scene;
 }
-const std::string& SceneRenderer::last_error() const {
-  return impl_->error;
+void SceneRenderer::set_hidden_objects(Span<const int> objects) {
+  Impl& s = *impl_;
+  s.hidden.assign(s.scene.objects.size(), false);
+  for (const int i : objects) {
+    if (i >= 0 && static_cast<std::size_t>(i) < s.hidden.size()) {
+      s.hidden[static_cast<std::size_t>(i)] = true;
+    }
+  }
 }
 
-void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
+Result<void> SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
   Impl& s = *impl_;
   auto pipes = s.pipelines_for(view);
   if (!pipes) {
-    s.error = pipes.error().message;
-    return;
+    return pipes.error();
   }
   const Pipelines& p = **pipes;
 
@@ -437,7 +440,7 @@ void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
   };
   for (std::size_t i = 0; i < s.scene.objects.size(); ++i) {
     const Object& o = s.scene.objects[i];
-    if ((o.layers & view.layer_mask) == 0) {
+    if ((o.layers & view.layer_mask) == 0 || (i < s.hidden.size() && s.hidden[i])) {
       continue;
     }
     const Mesh& mesh = s.scene.meshes[static_cast<std::size_t>(o.mesh)];
@@ -464,6 +467,7 @@ void SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& view) {
       draw_object(b.object);
     }
   }
+  return {};
 }
 
 } // namespace snell

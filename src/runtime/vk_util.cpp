@@ -1,6 +1,6 @@
 #include "vk_util.hpp"
 
-namespace snell::detail {
+namespace snell {
 
 std::string vk_result_name(VkResult result) {
   switch (result) {
@@ -43,7 +43,7 @@ Error vk_error(std::string_view call, VkResult result, std::string_view what) {
     message += what;
     message += ")";
   }
-  return Error{code, std::move(message)};
+  return Error{code, std::move(message), static_cast<std::int32_t>(result)};
 }
 
-} // namespace snell::detail
+} // namespace snell

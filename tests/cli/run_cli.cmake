@@ -65,7 +65,7 @@ expect_exit(2 render --effect water --set water.center=1 --out x.png)
 
 # snell list prints every parameter of every effect.
 expect_exit(0 list)
-foreach(key preset height center size resolution_scale clip_mode clip_offset wave_length
+foreach(key preset height center size resolution_scale refraction_source clip_mode clip_offset wave_length
         wave_height distortion wind_direction wind_force fresnel ior reflectance water_color color_blend
         specular_power specular_intensity absorption shore_softness reflection_layers
         refraction_layers debug_view normal_map)
@@ -92,7 +92,8 @@ expect_exit(0 render --scene "${ASSET_DIR}/courtyard.gltf" --effect water --set 
 expect_exit(0 bench --scene pool --effect water --size 96x54 --frames 3
             --json "${WORK_DIR}/bench.json" --validation)
 file(READ "${WORK_DIR}/bench.json" bench)
-foreach(field plain_ms effect_ms ratio passes device water.reflection water.refraction)
+# The frame phases and water's one extra scene pass (refraction comes from the snapshot).
+foreach(field plain_ms effect_ms ratio passes device opaque snapshot surfaces water.reflection)
   string(FIND "${bench}" "\"${field}\"" found)
   if(found EQUAL -1)
     message(FATAL_ERROR "bench JSON lacks '${field}':\n${bench}")

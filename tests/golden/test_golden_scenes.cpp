@@ -38,7 +38,8 @@ Rendered render_builtin(const std::string& name, const std::string& water_preset
   {
     auto renderer = SceneRenderer::create(*ctx, *scene);
     REQUIRE(renderer.has_value());
-    auto frame = FrameRenderer::create(*ctx, FrameDesc{kW, kH, ColorFormat::rgba8_srgb, false});
+    auto frame = FrameRenderer::create(
+        *ctx, FrameDesc{.width = kW, .height = kH, .color = ColorFormat::rgba8_srgb});
     REQUIRE(frame.has_value());
     REQUIRE_FALSE(scene->cameras.empty());
     std::unique_ptr<Effect> water;

@@ -99,21 +99,24 @@ Scene empty_dark_scene() {
 
 Image render_view(Context& ctx, SceneRenderer& renderer, const SceneView& view_in,
                   std::uint32_t width, std::uint32_t height) {
-  auto target = RenderTarget::create(
-      ctx, RenderTargetDesc{width, height, ColorFormat::rgba8_unorm, true, false, "test target"});
+  auto target = RenderTarget::create(ctx, RenderTargetDesc{.width = width,
+                                                           .height = height,
+                                                           .color = ColorFormat::rgba8_unorm,
+                                                           .debug_name = "test target"});
   REQUIRE_MESSAGE(target.has_value(), target.error().message);
   SceneView view = view_in;
   view.extent = {width, height};
   view.color_format = target->vk_color_format();
   view.depth_format = VK_FORMAT_D32_SFLOAT;
   const float clear[4] = {0, 0, 0, 1};
+  Result<void> drawn;
   auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     target->begin_rendering(cmd, clear);
-    renderer.draw_scene(cmd, view);
+    drawn = renderer.draw_scene(cmd, view);
     target->end_rendering(cmd);
   });
   REQUIRE_MESSAGE(r.has_value(), r.error().message);
-  CHECK_MESSAGE(renderer.last_error().empty(), renderer.last_error());
+  CHECK_MESSAGE(drawn.has_value(), drawn.error().message);
   auto image = read_rgba8(ctx, *target);
   REQUIRE_MESSAGE(image.has_value(), image.error().message);
   return *image;

@@ -114,8 +114,10 @@ TEST_CASE("context: adopting a host-created device") {
     auto ctx = Context::adopt(AdoptInfo{instance, pd, device, queue, 0, &f2});
     REQUIRE_MESSAGE(ctx.has_value(), ctx.error().message);
     CHECK_FALSE(ctx->owns_device());
-    auto target = RenderTarget::create(
-        *ctx, RenderTargetDesc{8, 4, ColorFormat::rgba8_unorm, true, false, "adopted"});
+    auto target = RenderTarget::create(*ctx, RenderTargetDesc{.width = 8,
+                                                              .height = 4,
+                                                              .color = ColorFormat::rgba8_unorm,
+                                                              .debug_name = "adopted"});
     REQUIRE(target.has_value());
     const float clear[4] = {0.0f, 1.0f, 0.0f, 1.0f};
     REQUIRE(ctx->submit_and_wait([&](VkCommandBuffer cmd) {

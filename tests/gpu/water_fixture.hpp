@@ -14,6 +14,7 @@ struct WaterRig {
   Scene scene;
   std::optional<SceneRenderer> renderer;
   std::optional<FrameRenderer> frame;
+  FrameStats last_stats; ///< Of the last render().
   std::unique_ptr<WaterEffect> water;
   CameraDesc camera;
   std::uint32_t width = 256, height = 192;

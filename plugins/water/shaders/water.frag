@@ -59,7 +59,7 @@ void main() {
   // without a seam.
   vec2 offset = slope * water.wave.z * shore;
 
-  vec3 reflection = texture(reflection_tex, uv + offset).rgb;
+  vec3 reflection = textureLod(reflection_tex, uv + offset, 0.0).rgb;
 
   // Refraction: a distorted sample that lands on something in front of the water (nearer the
   // eye than this surface point) falls back to the undistorted one. The test covers all four
@@ -74,7 +74,8 @@ void main() {
   }
   bool hit;
   vec3 q = underwater_point(uv_r, hit);
-  vec3 refraction = texture(refraction_tex, uv_r).rgb;
+  // Level 0: the snapshot has mips, and ripple offsets must not pick a blurred level.
+  vec3 refraction = textureLod(refraction_tex, uv_r, 0.0).rgb;
   // Water along the view ray: below the surface point from above, between eye and surface
   // from below (there it also dims the reflection, applied after the blend).
   float thickness = below ? 0.0 : (hit ? distance(p, q) : 1e4);

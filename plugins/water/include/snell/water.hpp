@@ -27,6 +27,17 @@ enum class WaterFresnel : std::uint8_t {
   constant, ///< A fixed reflection weight `reflectance` (seed 000's lerp(..., 0.6)).
 };
 
+/// Where the refraction (what is seen through the surface) comes from.
+enum class WaterRefractionSource : std::uint8_t {
+  /// The frame's scene snapshot (FrameInfo::snapshot): no extra scene pass; every object the
+  /// main view draws is refracted. Falls back to `pass` when the host gives no snapshot.
+  /// Default.
+  snapshot,
+  /// A refraction pass of its own at resolution_scale, clipped at the surface, drawing
+  /// refraction_layers (seeds 000/001).
+  pass,
+};
+
 /// What the water surface shows.
 enum class WaterDebugView : std::uint8_t { final, reflection, refraction, normals, fresnel };
 
@@ -43,6 +54,8 @@ struct WaterParams {
   /// Reflection and refraction target size relative to the output. Default 0.5 (1.0 = seeds).
   /// [0.1, 1].
   float resolution_scale = 0.5f;
+  /// Where the refraction comes from. Default snapshot (the pass when the host gives none).
+  WaterRefractionSource refraction_source = WaterRefractionSource::snapshot;
   /// Clipping of the reflection/refraction passes. Default oblique.
   WaterClipMode clip_mode = WaterClipMode::oblique;
   /// How far past the surface each pass keeps geometry, m, so the water line shows no seam or
@@ -108,8 +121,8 @@ struct WaterParams {
 [[nodiscard]] WaterParams water_seed_preset(const WaterParams& base = {});
 
 /// The water effect. Create it through the registry (`create("water", info)`) or directly with
-/// create_water; cast to WaterEffect for the typed API. Its per-frame uniforms live in a ring
-/// of 3 slots: a host may have at most 3 frames in flight per water effect. A camera exactly
+/// create_water; cast to WaterEffect for the typed API. Per-frame uniforms and descriptors are
+/// sized by EffectCreateInfo::frames_in_flight. A camera exactly
 /// on the plane cannot use an oblique near plane; the passes then clip with gl_ClipDistance
 /// whatever clip_mode says. From below the plane the passes swap sides: the surface shows
 /// total internal reflection of the underwater scene and, inside Snell's window, the world

@@ -1,0 +1,170 @@
+// SceneSnapshot: one copy of the opaque colour (with mips) and depth per frame.
+#include <snell/context.hpp>
+#include <snell/snapshot.hpp>
+#include <snell/toolkit/vk_check.hpp>
+
+#include "../runtime/barriers.hpp"
+
+namespace snell {
+
+using detail::ImageBarrier;
+
+Result<SceneSnapshot> SceneSnapshot::create(const Context& ctx, const SnapshotDesc& desc) {
+  if (desc.frames_in_flight < 1 || desc.frames_in_flight > 16) {
+    return fail(ErrorCode::invalid_argument,
+                "SnapshotDesc::frames_in_flight = " + std::to_string(desc.frames_in_flight) +
+                    " is outside [1, 16]");
+  }
+  SceneSnapshot s;
+  s.ctx_ = &ctx;
+  s.desc_ = desc;
+  s.release_ = DeferredRelease(desc.frames_in_flight);
+  return s;
+}
+
+Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& src,
+                                   std::uint64_t frame_index) {
+  if (ctx_ == nullptr) {
+    return fail(ErrorCode::invalid_argument, "scene snapshot: not created (SceneSnapshot::create)");
+  }
+  if (src.color == VK_NULL_HANDLE) {
+    return fail(ErrorCode::invalid_argument, "scene snapshot: SnapshotSource::color is null");
+  }
+  if (src.extent.width == 0 || src.extent.height == 0) {
+    return fail(ErrorCode::invalid_argument, "scene snapshot: SnapshotSource::extent is " +
+                                                 std::to_string(src.extent.width) + "x" +
+                                                 std::to_string(src.extent.height));
+  }
+  release_.collect(frame_index);
+  if (!target_ || target_.width() != src.extent.width || target_.height() != src.extent.height) {
+    RenderTargetDesc rd;
+    rd.width = src.extent.width;
+    rd.height = src.extent.height;
+    rd.color = desc_.color;
+    rd.depth = true;
+    rd.mips = desc_.mips;
+    rd.debug_name = "scene snapshot";
+    auto t = RenderTarget::create(*ctx_, rd);
+    if (!t) {
+      return t.error();
+    }
+    if (target_) {
+      release_.retire(frame_index, std::move(target_));
+    }
+    target_ = std::move(*t);
+  }
+  const bool depth = src.depth != VK_NULL_HANDLE;
+  constexpr VkPipelineStageFlags2 kDepthStages =
+      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+  constexpr VkPipelineStageFlags2 kColorWriters =
+      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+  // Sources to TRANSFER_SRC after the opaque phase's writes; the copies to TRANSFER_DST after
+  // the previous frame's reads (their contents are replaced).
+  const ImageBarrier before[4] = {
+      {src.color, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, src.color_layout,
+       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorWriters | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
+      {target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+      {target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+      {src.depth, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, src.depth_layout,
+       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStages | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+       VK_ACCESS_2_TRANSFER_READ_BIT},
+  };
+  detail::barrier(cmd, before, depth ? 4 : 2);
+
+  // Colour: a same-size blit (a plain copy when the formats match, a conversion otherwise).
+  auto region = vk_struct<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.srcOffsets[1] = {static_cast<std::int32_t>(src.extent.width),
+                          static_cast<std::int32_t>(src.extent.height), 1};
+  region.dstSubresource = region.srcSubresource;
+  region.dstOffsets[1] = region.srcOffsets[1];
+  auto blit = vk_struct<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
+  blit.srcImage = src.color;
+  blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  blit.dstImage = target_.color_image();
+  blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  blit.regionCount = 1;
+  blit.pRegions = &region;
+  blit.filter = VK_FILTER_NEAREST;
+  vkCmdBlitImage2(cmd, &blit);
+  if (depth) {
+    auto copy_region = vk_struct<VkImageCopy2>(VK_STRUCTURE_TYPE_IMAGE_COPY_2);
+    copy_region.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    copy_region.dstSubresource = copy_region.srcSubresource;
+    copy_region.extent = {src.extent.width, src.extent.height, 1};
+    auto copy = vk_struct<VkCopyImageInfo2>(VK_STRUCTURE_TYPE_COPY_IMAGE_INFO_2);
+    copy.srcImage = src.depth;
+    copy.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    copy.dstImage = target_.depth_image();
+    copy.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    copy.regionCount = 1;
+    copy.pRegions = &copy_region;
+    vkCmdCopyImage2(cmd, &copy);
+  }
+
+  // Sources back to their layouts for the surfaces phase; the copies to SHADER_READ_ONLY.
+  const ImageBarrier after[3] = {
+      {src.color, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+       src.color_layout, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE,
+       kColorWriters | detail::kReadStages,
+       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT |
+           detail::kReadAccess},
+      {target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, detail::kReadStages,
+       detail::kReadAccess},
+      {src.depth, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+       src.depth_layout, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+       kDepthStages | detail::kReadStages,
+       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+           VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | detail::kReadAccess},
+  };
+  detail::barrier(cmd, after, depth ? 3 : 1);
+  detail::generate_mips(cmd, target_.color_image(), target_.width(), target_.height(),
+                        target_.mip_levels(), 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                        VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  view_proj_ = src.view_proj;
+  ++copies_;
+  return {};
+}
+
+std::vector<DebugTarget> SceneSnapshot::debug_targets() const {
+  std::vector<DebugTarget> out;
+  if (!target_) {
+    return out;
+  }
+  DebugTarget c;
+  c.name = "snapshot.color";
+  c.view = target_.color_view();
+  c.image = target_.color_image();
+  c.width = target_.width();
+  c.height = target_.height();
+  c.format = target_.vk_color_format();
+  out.push_back(c);
+  if (target_.mip_levels() > 2) {
+    DebugTarget m = c;
+    m.name = "snapshot.color_mip2";
+    m.kind = DebugKind::mip_level;
+    m.mip = 2;
+    m.width = std::max(1u, c.width >> 2);
+    m.height = std::max(1u, c.height >> 2);
+    out.push_back(m);
+  }
+  DebugTarget d = c;
+  d.name = "snapshot.depth";
+  d.kind = DebugKind::depth;
+  d.view = target_.depth_view();
+  d.image = target_.depth_image();
+  d.format = VK_FORMAT_D32_SFLOAT;
+  out.push_back(d);
+  return out;
+}
+
+} // namespace snell
