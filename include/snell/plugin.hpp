@@ -27,5 +27,6 @@
 #include <snell/toolkit/descriptors.hpp>
 #include <snell/toolkit/scaled_target.hpp>
 #include <snell/toolkit/scene_pass.hpp>
+#include <snell/toolkit/surfaces.hpp>
 #include <snell/toolkit/uniform_ring.hpp>
 #include <snell/toolkit/vk_check.hpp>

@@ -75,15 +75,19 @@ public:
     pd.set_layouts = {sets_.layout()};
     pd.state.color_formats = {info.color_format};
     pd.state.depth_format = info.depth_format;
-    pd.state.vertex_input = false;
     // The surface does not write depth: the scene's depth behind it stays for effects after it.
     pd.state.depth_write = false;
-    pd.state.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
     auto pipeline = Pipeline::create(*ctx_, pd);
     if (!pipeline) {
       return pipeline.error();
     }
     pipeline_ = std::move(*pipeline);
+    // The rectangle: the unit quad, placed by the vertex shader from the uniform block.
+    auto quad = Surfaces::shape(*ctx_, Shape::quad);
+    if (!quad) {
+      return quad.error();
+    }
+    surface_ = std::move(*quad);
     return {};
   }
 
@@ -222,7 +226,7 @@ public:
     vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
     vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
     sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), frame_, &*offset, 1);
-    vkCmdDraw(cmd, 4, 1, 0, 0);
+    surface_.draw(cmd, 0);
     return {};
   }
 
@@ -341,6 +345,7 @@ private:
   UniformRing ubo_;
   DescriptorSets sets_;
   Pipeline pipeline_;
+  Surfaces surface_;
   std::vector<DebugTarget> debug_;
 };
 
