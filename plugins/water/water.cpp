@@ -46,19 +46,21 @@ public:
       return tex.error();
     }
     normal_map_ = std::move(*tex);
-    auto ring = UniformRing::create(
-        *ctx_, UniformRingDesc{sizeof(WaterBlock), 1, frames_in_flight_, "water uniforms"});
+    auto ring = UniformRing::create(*ctx_, UniformRingDesc{.block_size = sizeof(WaterBlock),
+                                                           .frames_in_flight = frames_in_flight_,
+                                                           .label = "water uniforms"});
     if (!ring) {
       return ring.error();
     }
     ubo_ = std::move(*ring);
     constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     DescriptorSetDesc sd;
-    sd.bindings = {{kUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kBoth},
-                   {kReflection},
-                   {kRefraction},
-                   {kRefractionDepth},
-                   {kNormals}};
+    sd.bindings = {
+        {.binding = kUniforms, .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, .stages = kBoth},
+        {.binding = kReflection},
+        {.binding = kRefraction},
+        {.binding = kRefractionDepth},
+        {.binding = kNormals}};
     sd.frames_in_flight = frames_in_flight_;
     sd.label = "water descriptors";
     auto sets = DescriptorSets::create(*ctx_, sd);
@@ -339,8 +341,8 @@ private:
   bool debug_has_snapshot_ = false;
   std::uint64_t frame_ = 0;
   SceneView reflection_view_, refraction_view_;
-  ScaledTarget reflection_{{0.5f, ColorFormat::rgba16_float, true, false, "water reflection"}};
-  ScaledTarget refraction_{{0.5f, ColorFormat::rgba16_float, true, false, "water refraction"}};
+  ScaledTarget reflection_{{.scale = 0.5f, .label = "water reflection"}};
+  ScaledTarget refraction_{{.scale = 0.5f, .label = "water refraction"}};
   Texture2D normal_map_;
   UniformRing ubo_;
   DescriptorSets sets_;
