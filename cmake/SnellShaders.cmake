@@ -2,19 +2,56 @@
 # maintenance4 for LocalSizeId) at build time (glslangValidator), validates it (spirv-val) and embeds
 # it into a target as C++ arrays, so nothing is read from disk at run time.
 #
-#   snell_embed_shaders(<target> NAME <namespace-name> INCLUDE_DIR <dir> SHADERS <files>...)
+#   snell_embed_shaders(<target> NAME <header-name> NAMESPACE <c++::namespace>
+#                       INCLUDE_DIR <dir> SHADERS <files>...)
 #
-# For each shader `dir/foo.frag` the target gets `snell::shaders::foo_frag` (a
+# For each shader `dir/foo.frag` the target gets `<namespace>::foo_frag` (a
 # std::span<const std::uint32_t>) declared in the generated header `<NAME>.hpp` (on the target's
 # private include path). Dependencies on #included files are tracked through depfiles, so a
 # change to an included .glsl rebuilds what uses it.
+#
+# NAMESPACE is required and must be unique to the target: the spans are ordinary external
+# symbols, so two targets that embed shaders of the same file name (`blit.frag` in the runtime
+# and in a plugin) into one namespace define the same symbol, and when both are static libraries
+# the linker silently keeps one of them (the other target then runs the wrong shader). There is
+# deliberately no default: a shared default is exactly that defect, and one derived from NAME
+# would be a name nobody can guess at the use site. Conventions:
+#   snell::shaders           the runtime (src/)
+#   snell::<plugin>::shaders plugins (snell_add_plugin, plugins/CMakeLists.txt)
+#   snell::<suite>::shaders  test suites (e.g. snell::gpu_tests::shaders)
+# Configuring fails if two targets of one build use the same NAMESPACE. The SPIR-V words
+# themselves are in an anonymous namespace in their own generated .cpp, so they never clash.
 include_guard(GLOBAL)
 
 find_program(SNELL_GLSLANG glslangValidator REQUIRED)
 find_program(SNELL_SPIRV_VAL spirv-val REQUIRED)
 
 function(snell_embed_shaders target)
-  cmake_parse_arguments(ARG "" "NAME;INCLUDE_DIR" "SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;NAMESPACE;INCLUDE_DIR" "SHADERS" ${ARGN})
+  foreach(_required IN ITEMS NAME NAMESPACE INCLUDE_DIR SHADERS)
+    if(NOT ARG_${_required})
+      message(FATAL_ERROR "snell_embed_shaders(${target}): ${_required} is required")
+    endif()
+  endforeach()
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR
+      "snell_embed_shaders(${target}): unexpected arguments '${ARG_UNPARSED_ARGUMENTS}'")
+  endif()
+  set(_ident "[A-Za-z_][A-Za-z0-9_]*")
+  if(NOT ARG_NAMESPACE MATCHES "^${_ident}(::${_ident})*$")
+    message(FATAL_ERROR
+      "snell_embed_shaders(${target}): NAMESPACE '${ARG_NAMESPACE}' is not a C++ namespace name")
+  endif()
+  # One namespace, one target: a second target in the same namespace would share symbols.
+  string(MAKE_C_IDENTIFIER "SNELL_SHADER_NAMESPACE_${ARG_NAMESPACE}" _owner_prop)
+  get_property(_owner GLOBAL PROPERTY ${_owner_prop})
+  if(_owner AND NOT _owner STREQUAL target)
+    message(FATAL_ERROR
+      "snell_embed_shaders(${target}): NAMESPACE '${ARG_NAMESPACE}' is already used by target "
+      "'${_owner}'; each target needs its own (shaders of the same file name would clash)")
+  endif()
+  set_property(GLOBAL PROPERTY ${_owner_prop} ${target})
+
   set(gen_dir "${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}")
   file(MAKE_DIRECTORY "${gen_dir}")
   set(sources)
@@ -33,14 +70,15 @@ function(snell_embed_shaders target)
       COMMAND "${SNELL_SPIRV_VAL}" --target-env vulkan1.2 "${spv}"
       DEPENDS "${abs}"
       DEPFILE "${dep}"
-      COMMENT "GLSL -> SPIR-V (validated): ${file_name}"
+      COMMENT "GLSL -> SPIR-V (validated): ${file_name} (${target})"
       VERBATIM)
     add_custom_command(
       OUTPUT "${cpp}"
       COMMAND "${CMAKE_COMMAND}" -DINPUT=${spv} -DOUTPUT=${cpp} -DSYMBOL=${symbol}
+              -DNAMESPACE=${ARG_NAMESPACE}
               -P "${PROJECT_SOURCE_DIR}/cmake/SnellEmbedSpirv.cmake"
       DEPENDS "${spv}" "${PROJECT_SOURCE_DIR}/cmake/SnellEmbedSpirv.cmake"
-      COMMENT "Embedding ${file_name}.spv"
+      COMMENT "Embedding ${file_name}.spv (${target})"
       VERBATIM)
     list(APPEND sources "${cpp}")
     string(APPEND decls "extern const std::span<const std::uint32_t> ${symbol};\n")
@@ -50,8 +88,8 @@ function(snell_embed_shaders target)
 #pragma once
 #include <cstdint>
 #include <span>
-namespace snell::shaders {
-${decls}} // namespace snell::shaders
+namespace ${ARG_NAMESPACE} {
+${decls}} // namespace ${ARG_NAMESPACE}
 ")
   target_sources(${target} PRIVATE ${sources})
   target_include_directories(${target} PRIVATE "${gen_dir}")

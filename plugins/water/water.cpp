@@ -380,8 +380,8 @@ private:
     ai.pSetLayouts = &set_layout_;
     WATER_VK(vkAllocateDescriptorSets(d, &ai, &set_), "descriptor set");
 
-    auto vert = create_shader_module(d, shaders::water_vert, "water.vert");
-    auto frag = create_shader_module(d, shaders::water_frag, "water.frag");
+    auto vert = create_shader_module(d, water::shaders::water_vert, "water.vert");
+    auto frag = create_shader_module(d, water::shaders::water_frag, "water.frag");
     Result<VkPipeline> pipeline = fail(ErrorCode::vulkan_error, "water: shader modules");
     if (vert && frag) {
       GraphicsPipelineDesc desc;

@@ -1,6 +1,6 @@
 #include "host_scene.hpp"
 
-#include "embed_host_shaders.hpp" // generated: snell::shaders::host_scene_vert, ...
+#include "embed_host_shaders.hpp" // generated: embed::shaders::host_scene_vert, ...
 
 #include <snell/math/plane.hpp>
 
@@ -134,10 +134,10 @@ void HostScene::init(const HostDevice& device, const PoolWater& water) {
   vkUnmapMemory(d, vertex_memory_);
 
   // --- Shaders and the pipeline layout (push constants only). ---------------------------------
-  scene_vert_ = make_module(d, snell::shaders::host_scene_vert);
-  scene_frag_ = make_module(d, snell::shaders::host_scene_frag);
-  sky_vert_ = make_module(d, snell::shaders::host_sky_vert);
-  sky_frag_ = make_module(d, snell::shaders::host_sky_frag);
+  scene_vert_ = make_module(d, embed::shaders::host_scene_vert);
+  scene_frag_ = make_module(d, embed::shaders::host_scene_frag);
+  sky_vert_ = make_module(d, embed::shaders::host_sky_vert);
+  sky_frag_ = make_module(d, embed::shaders::host_sky_frag);
   const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                   sizeof(Push)};
   VkPipelineLayoutCreateInfo li{};

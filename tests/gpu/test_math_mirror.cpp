@@ -82,8 +82,8 @@ TEST_CASE("GLSL math mirrors agree with the C++ functions") {
   REQUIRE(vkCreatePipelineLayout(d, &pli, nullptr, &layout) == VK_SUCCESS);
   VkShaderModuleCreateInfo smci{};
   smci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-  smci.codeSize = shaders::math_check_comp.size_bytes();
-  smci.pCode = shaders::math_check_comp.data();
+  smci.codeSize = gpu_tests::shaders::math_check_comp.size_bytes();
+  smci.pCode = gpu_tests::shaders::math_check_comp.data();
   VkShaderModule module = VK_NULL_HANDLE;
   REQUIRE(vkCreateShaderModule(d, &smci, nullptr, &module) == VK_SUCCESS);
   VkComputePipelineCreateInfo cpci{};
