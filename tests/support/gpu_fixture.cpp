@@ -148,9 +148,9 @@ glm::vec2 predict_pixel(const glm::mat4& view_proj, glm::vec3 world, std::uint32
   return uv * glm::vec2(width, height);
 }
 
-void save_png(const Image& image, const std::string& name) {
-  std::filesystem::create_directories(SNELL_TEST_OUTPUT_DIR);
-  (void)write_png(std::filesystem::path(SNELL_TEST_OUTPUT_DIR) / (name + ".png"), image);
+void save_png_in(const std::string& dir, const Image& image, const std::string& name) {
+  std::filesystem::create_directories(dir);
+  (void)write_png(std::filesystem::path(dir) / (name + ".png"), image);
 }
 
 } // namespace snell::test

@@ -1,4 +1,6 @@
 // GPU test support: one validated context per test, scene building blocks, pixel probes.
+// The snell::test_support library (tests/support/CMakeLists.txt), shared by tests/gpu and the
+// plugins' own tests.
 #pragma once
 
 #include <snell/context.hpp>
@@ -60,7 +62,16 @@ Blob find_color(const Image& image, glm::vec3 rgb, int tolerance = 24);
 glm::vec2 predict_pixel(const glm::mat4& view_proj, glm::vec3 world, std::uint32_t width,
                         std::uint32_t height);
 
-/// Writes `image` to the test output folder (for looking at failures).
-void save_png(const Image& image, const std::string& name);
+/// Writes `image` as `<dir>/<name>.png`, creating `dir`.
+void save_png_in(const std::string& dir, const Image& image, const std::string& name);
+
+#ifdef SNELL_TEST_OUTPUT_DIR
+/// Writes `image` to the test executable's output folder (for looking at failures). Inline: the
+/// folder is the SNELL_TEST_OUTPUT_DIR of the test executable that includes this header, not of
+/// the support library, so each suite keeps its own folder.
+inline void save_png(const Image& image, const std::string& name) {
+  save_png_in(SNELL_TEST_OUTPUT_DIR, image, name);
+}
+#endif
 
 } // namespace snell::test
