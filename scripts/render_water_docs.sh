@@ -204,6 +204,8 @@ render absorption_strong 480x270 cam_low --set water.absorption=1.5,0.3,0.2
 # shore_softness: 0 and 0.5 at the orange ball's water line
 render shore_0 480x270 cam_ball --set water.shore_softness=0
 render shore_0.5 480x270 cam_ball --set water.shore_softness=0.5
+# refraction_source: pass (snapshot is low_default)
+render refraction_pass 480x270 cam_low --set water.refraction_source=pass
 # clip_mode: clip_distance (oblique is low_default)
 render clip_distance 480x270 cam_low --set water.clip_mode=clip_distance
 # the seed preset (default: low_default and pool_water)

@@ -174,6 +174,10 @@ public:
   /// True when record_draw samples FrameInfo::snapshot this frame (the host then records one
   /// SceneSnapshot copy, shared by every effect). Default false.
   [[nodiscard]] virtual bool wants_snapshot() const { return false; }
+  /// True when record_draw also samples the snapshot colour's levels above 0 (frosted glass):
+  /// the host then builds the mip chain this frame (SnapshotSource::mips). Default false: only
+  /// level 0 and depth are copied, the cheapest snapshot.
+  [[nodiscard]] virtual bool wants_snapshot_mips() const { return false; }
   /// Objects of EffectCreateInfo::scene (indices into Scene::objects) that this effect draws
   /// itself with its own shading: the host's scene renderer leaves them out. Default none.
   [[nodiscard]] virtual Span<const int> drawn_objects() const { return {}; }

@@ -112,3 +112,23 @@ private:
 }
 
 } // namespace snell
+
+/// Returns the error of `expr` (a snell::Result<void>) from the enclosing function, which
+/// returns a snell::Result.
+#define SNELL_TRY(expr)                                                                            \
+  do {                                                                                             \
+    if (auto snell_try_result_ = (expr); !snell_try_result_) {                                     \
+      return snell_try_result_.error();                                                            \
+    }                                                                                              \
+  } while (false)
+
+/// Evaluates `expr` (a snell::Result<T>); on error returns it from the enclosing function, else
+/// moves the value into `lhs` (an existing object, e.g. a member).
+#define SNELL_ASSIGN_OR_RETURN(lhs, expr)                                                          \
+  do {                                                                                             \
+    auto snell_assign_result_ = (expr);                                                            \
+    if (!snell_assign_result_) {                                                                   \
+      return snell_assign_result_.error();                                                         \
+    }                                                                                              \
+    (lhs) = std::move(*snell_assign_result_);                                                      \
+  } while (false)

@@ -29,12 +29,17 @@ struct SnapshotSource {
   VkImageLayout depth_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   VkExtent2D extent{0, 0};   ///< Size of both, pixels. Required.
   glm::mat4 view_proj{1.0f}; ///< The view-projection the images were rendered with.
+  /// Build the colour copy's mip chain this frame (an effect samples blurred levels). Without
+  /// it only level 0 (and depth) are this frame's. Default true.
+  bool mips = true;
 };
 
 /// Parameters of SceneSnapshot::create.
 struct SnapshotDesc {
-  /// Format of the colour copy. Default rgba16_float (HDR-safe; an 8-bit sRGB source converts
-  /// exactly).
+  /// Format of the colour copy when the source's format is none of ColorFormat's (then a blit
+  /// converts). A source in rgba8_unorm, rgba8_srgb or rgba16_float is copied in its own format
+  /// (a plain image copy: no conversion, half the bytes of a float copy for 8-bit sources).
+  /// Default rgba16_float.
   ColorFormat color = ColorFormat::rgba16_float;
   bool mips = true;                   ///< A full mip chain on the colour copy. Default true.
   std::uint32_t frames_in_flight = 2; ///< Frames the host may have in flight, 1..16. Default 2.
@@ -79,6 +84,11 @@ public:
   ~SceneSnapshot() = default;
 
 private:
+  static void copy_image(VkCommandBuffer cmd, VkImage from, VkImage to, VkImageAspectFlags aspect,
+                         VkExtent2D extent);
+  void blit_color(VkCommandBuffer cmd, const SnapshotSource& src) const;
+  /// Returns the sources to their layouts and the copies to SHADER_READ_ONLY (mips if asked).
+  void finish(VkCommandBuffer cmd, const SnapshotSource& src) const;
   const Context* ctx_ = nullptr;
   SnapshotDesc desc_;
   RenderTarget target_;

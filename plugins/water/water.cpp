@@ -41,18 +41,10 @@ public:
         params_.size = glm::max(glm::vec2(a->size.x, a->size.z), glm::vec2(0.01f));
       }
     }
-    auto tex = load_normal_map("");
-    if (!tex) {
-      return tex.error();
-    }
-    normal_map_ = std::move(*tex);
-    auto ring = UniformRing::create(*ctx_, UniformRingDesc{.block_size = sizeof(WaterBlock),
-                                                           .frames_in_flight = frames_in_flight_,
-                                                           .label = "water uniforms"});
-    if (!ring) {
-      return ring.error();
-    }
-    ubo_ = std::move(*ring);
+    SNELL_ASSIGN_OR_RETURN(normal_map_, load_normal_map(""));
+    SNELL_ASSIGN_OR_RETURN(ubo_, UniformRing::create(*ctx_, {.block_size = sizeof(WaterBlock),
+                                                             .frames_in_flight = frames_in_flight_,
+                                                             .label = "water uniforms"}));
     constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     DescriptorSetDesc sd;
     sd.bindings = {
@@ -63,11 +55,7 @@ public:
         {.binding = kNormals}};
     sd.frames_in_flight = frames_in_flight_;
     sd.label = "water descriptors";
-    auto sets = DescriptorSets::create(*ctx_, sd);
-    if (!sets) {
-      return sets.error();
-    }
-    sets_ = std::move(*sets);
+    SNELL_ASSIGN_OR_RETURN(sets_, DescriptorSets::create(*ctx_, sd));
     sets_.set_buffer(kUniforms, ubo_.buffer(), 0, ubo_.block_size());
     sets_.set_image(kNormals, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
     GraphicsPipelineDesc pd;
@@ -79,17 +67,9 @@ public:
     pd.state.depth_format = info.depth_format;
     // The surface does not write depth: the scene's depth behind it stays for effects after it.
     pd.state.depth_write = false;
-    auto pipeline = Pipeline::create(*ctx_, pd);
-    if (!pipeline) {
-      return pipeline.error();
-    }
-    pipeline_ = std::move(*pipeline);
+    SNELL_ASSIGN_OR_RETURN(pipeline_, Pipeline::create(*ctx_, pd));
     // The rectangle: the unit quad, placed by the vertex shader from the uniform block.
-    auto quad = Surfaces::shape(*ctx_, Shape::quad);
-    if (!quad) {
-      return quad.error();
-    }
-    surface_ = std::move(*quad);
+    SNELL_ASSIGN_OR_RETURN(surface_, Surfaces::shape(*ctx_, Shape::quad));
     return {};
   }
 

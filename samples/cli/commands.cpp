@@ -192,7 +192,7 @@ int run_bench(const RenderOptions& o) {
   }
   // Interleaved plain/effect frames, so drift (thermal, other load) hits both alike.
   std::vector<double> plain_gpu, effect_gpu, plain_cpu, effect_cpu;
-  std::map<std::string, std::vector<double>> passes;
+  std::map<std::string, std::vector<double>> passes, plain_passes;
   for (std::uint32_t i = 0; i < o.frames; ++i) {
     const float t = o.time + static_cast<float>(i) / 60.0f;
     auto plain = s.render(t, false);
@@ -206,6 +206,9 @@ int run_bench(const RenderOptions& o) {
     effect_cpu.push_back(effect->cpu_ms);
     for (const PassTime& p : effect->passes) {
       passes[p.name].push_back(p.ms);
+    }
+    for (const PassTime& p : plain->passes) {
+      plain_passes[p.name].push_back(p.ms);
     }
   }
   const double plain_ms = median(plain_gpu);
@@ -224,6 +227,9 @@ int run_bench(const RenderOptions& o) {
   for (const auto& [name, times] : passes) {
     std::printf("  pass %-24s %.3f ms\n", name.c_str(), median(times));
   }
+  for (const auto& [name, times] : plain_passes) {
+    std::printf("  plain pass %-18s %.3f ms\n", name.c_str(), median(times));
+  }
   if (!o.json.empty()) {
     std::ofstream json(o.json);
     if (!json) {
@@ -238,6 +244,12 @@ int run_bench(const RenderOptions& o) {
          << ",\n  \"effect_cpu_ms\": " << median(effect_cpu) << ",\n  \"passes\": {";
     bool first = true;
     for (const auto& [name, times] : passes) {
+      json << (first ? "\n" : ",\n") << "    \"" << json_escape(name) << "\": " << median(times);
+      first = false;
+    }
+    json << "\n  },\n  \"plain_passes\": {";
+    first = true;
+    for (const auto& [name, times] : plain_passes) {
       json << (first ? "\n" : ",\n") << "    \"" << json_escape(name) << "\": " << median(times);
       first = false;
     }

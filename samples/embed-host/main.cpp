@@ -213,6 +213,7 @@ snell::Result<void> record_frame(embed::HostFrame& frame, embed::HostScene& scen
     source.depth_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     source.extent = frame.extent;
     source.view_proj = info.main_view.proj * info.main_view.view;
+    source.mips = effect->wants_snapshot_mips(); // water reads level 0 only
     result = snapshot.record(cmd, source, info.frame_index);
   }
 

@@ -190,6 +190,8 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
     src.depth_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     src.extent = {s.desc.width, s.desc.height};
     src.view_proj = view.proj * view.view;
+    src.mips = std::any_of(active.begin(), active.end(),
+                           [](const Effect* e) { return e->wants_snapshot_mips(); });
     auto r = s.snapshot.record(cmd, src, s.frame_index);
     s.timer.end(cmd);
     if (r) {
@@ -199,16 +201,19 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
     }
   }
 
-  // Phase 5: effect surfaces over the opaque colour and depth.
-  s.timer.begin(cmd, "surfaces");
-  s.target.continue_rendering(cmd);
-  for (Effect* e : std::vector<Effect*>(active)) {
-    if (auto r = e->record_draw(cmd, info); !r) {
-      drop(e, r.error());
+  // Phase 5: effect surfaces over the opaque colour and depth (no rendering when none is left:
+  // the cheapest pass is the one not begun).
+  if (!active.empty()) {
+    s.timer.begin(cmd, "surfaces");
+    s.target.continue_rendering(cmd);
+    for (Effect* e : std::vector<Effect*>(active)) {
+      if (auto r = e->record_draw(cmd, info); !r) {
+        drop(e, r.error());
+      }
     }
+    s.target.end_rendering(cmd);
+    s.timer.end(cmd);
   }
-  s.target.end_rendering(cmd);
-  s.timer.end(cmd);
 
   // Phase 6: debug thumbnails of every effect's targets.
   if (s.desc.debug_targets) {

@@ -22,6 +22,27 @@ Result<SceneSnapshot> SceneSnapshot::create(const Context& ctx, const SnapshotDe
   return s;
 }
 
+namespace {
+
+constexpr VkPipelineStageFlags2 kDepthStages =
+    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkPipelineStageFlags2 kColorWriters =
+    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kTransfer = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+
+/// The ColorFormat whose VkFormat is `format`, or `fallback`.
+ColorFormat color_format_of(VkFormat format, ColorFormat fallback) {
+  for (const ColorFormat f :
+       {ColorFormat::rgba8_unorm, ColorFormat::rgba8_srgb, ColorFormat::rgba16_float}) {
+    if (to_vk_format(f) == format) {
+      return f;
+    }
+  }
+  return fallback;
+}
+
+} // namespace
+
 Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& src,
                                    std::uint64_t frame_index) {
   if (ctx_ == nullptr) {
@@ -36,11 +57,14 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
                                                  std::to_string(src.extent.height));
   }
   release_.collect(frame_index);
-  if (!target_ || target_.width() != src.extent.width || target_.height() != src.extent.height) {
+  // The source's own format when it is one of ColorFormat's: a copy instead of a conversion.
+  const ColorFormat format = color_format_of(src.color_format, desc_.color);
+  if (!target_ || target_.width() != src.extent.width || target_.height() != src.extent.height ||
+      target_.color_format() != format) {
     RenderTargetDesc rd;
     rd.width = src.extent.width;
     rd.height = src.extent.height;
-    rd.color = desc_.color;
+    rd.color = format;
     rd.depth = true;
     rd.mips = desc_.mips;
     rd.debug_name = "scene snapshot";
@@ -54,31 +78,56 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
     target_ = std::move(*t);
   }
   const bool depth = src.depth != VK_NULL_HANDLE;
-  constexpr VkPipelineStageFlags2 kDepthStages =
-      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-  constexpr VkPipelineStageFlags2 kColorWriters =
-      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-  // Sources to TRANSFER_SRC after the opaque phase's writes; the copies to TRANSFER_DST after
-  // the previous frame's reads (their contents are replaced).
+  // Sources to TRANSFER_SRC after the opaque phase's writes; the copies' level 0 and depth to
+  // TRANSFER_DST after the previous frame's reads (their contents are replaced).
   const ImageBarrier before[4] = {
       {src.color, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, src.color_layout,
-       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorWriters | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
+       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorWriters | kTransfer,
+       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT, kTransfer,
+       VK_ACCESS_2_TRANSFER_READ_BIT},
       {target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
-       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
-       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE, kTransfer,
+       VK_ACCESS_2_TRANSFER_WRITE_BIT},
       {target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
-       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
-       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE, kTransfer,
+       VK_ACCESS_2_TRANSFER_WRITE_BIT},
       {src.depth, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, src.depth_layout,
        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStages | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-       VK_ACCESS_2_TRANSFER_READ_BIT},
+       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kTransfer, VK_ACCESS_2_TRANSFER_READ_BIT},
   };
   detail::barrier(cmd, before, depth ? 4 : 2);
+  // Colour: a plain copy in the source's format, else a same-size blit that converts.
+  if (target_.vk_color_format() == src.color_format) {
+    copy_image(cmd, src.color, target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, src.extent);
+  } else {
+    blit_color(cmd, src);
+  }
+  if (depth) {
+    copy_image(cmd, src.depth, target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, src.extent);
+  }
+  finish(cmd, src);
+  view_proj_ = src.view_proj;
+  ++copies_;
+  return {};
+}
 
-  // Colour: a same-size blit (a plain copy when the formats match, a conversion otherwise).
+void SceneSnapshot::copy_image(VkCommandBuffer cmd, VkImage from, VkImage to,
+                               VkImageAspectFlags aspect, VkExtent2D extent) {
+  auto region = vk_struct<VkImageCopy2>(VK_STRUCTURE_TYPE_IMAGE_COPY_2);
+  region.srcSubresource = {aspect, 0, 0, 1};
+  region.dstSubresource = region.srcSubresource;
+  region.extent = {extent.width, extent.height, 1};
+  auto copy = vk_struct<VkCopyImageInfo2>(VK_STRUCTURE_TYPE_COPY_IMAGE_INFO_2);
+  copy.srcImage = from;
+  copy.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  copy.dstImage = to;
+  copy.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  copy.regionCount = 1;
+  copy.pRegions = &region;
+  vkCmdCopyImage2(cmd, &copy);
+}
+
+void SceneSnapshot::blit_color(VkCommandBuffer cmd, const SnapshotSource& src) const {
   auto region = vk_struct<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
   region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.srcOffsets[1] = {static_cast<std::int32_t>(src.extent.width),
@@ -94,45 +143,37 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
   blit.pRegions = &region;
   blit.filter = VK_FILTER_NEAREST;
   vkCmdBlitImage2(cmd, &blit);
-  if (depth) {
-    auto copy_region = vk_struct<VkImageCopy2>(VK_STRUCTURE_TYPE_IMAGE_COPY_2);
-    copy_region.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-    copy_region.dstSubresource = copy_region.srcSubresource;
-    copy_region.extent = {src.extent.width, src.extent.height, 1};
-    auto copy = vk_struct<VkCopyImageInfo2>(VK_STRUCTURE_TYPE_COPY_IMAGE_INFO_2);
-    copy.srcImage = src.depth;
-    copy.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    copy.dstImage = target_.depth_image();
-    copy.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    copy.regionCount = 1;
-    copy.pRegions = &copy_region;
-    vkCmdCopyImage2(cmd, &copy);
-  }
+}
 
-  // Sources back to their layouts for the surfaces phase; the copies to SHADER_READ_ONLY.
+void SceneSnapshot::finish(VkCommandBuffer cmd, const SnapshotSource& src) const {
+  const bool depth = src.depth != VK_NULL_HANDLE;
+  // Sources back to their layouts for the surfaces phase; the depth copy to SHADER_READ_ONLY.
   const ImageBarrier after[3] = {
       {src.color, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-       src.color_layout, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE,
-       kColorWriters | detail::kReadStages,
+       src.color_layout, kTransfer, VK_ACCESS_2_NONE, kColorWriters | detail::kReadStages,
        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT |
            detail::kReadAccess},
       {target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1,
-       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, detail::kReadStages,
-       detail::kReadAccess},
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kTransfer,
+       VK_ACCESS_2_TRANSFER_WRITE_BIT, detail::kReadStages, detail::kReadAccess},
       {src.depth, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-       src.depth_layout, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-       kDepthStages | detail::kReadStages,
+       src.depth_layout, kTransfer, VK_ACCESS_2_NONE, kDepthStages | detail::kReadStages,
        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | detail::kReadAccess},
   };
   detail::barrier(cmd, after, depth ? 3 : 1);
-  detail::generate_mips(cmd, target_.color_image(), target_.width(), target_.height(),
-                        target_.mip_levels(), 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                        VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  view_proj_ = src.view_proj;
-  ++copies_;
-  return {};
+  if (src.mips && target_.mip_levels() > 1) {
+    detail::generate_mips(cmd, target_.color_image(), target_.width(), target_.height(),
+                          target_.mip_levels(), 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kTransfer,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  } else {
+    // Level 0 only; the other levels keep SHADER_READ_ONLY_OPTIMAL (and older contents).
+    detail::barrier(cmd, ImageBarrier{target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1,
+                                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kTransfer,
+                                      VK_ACCESS_2_TRANSFER_WRITE_BIT, detail::kReadStages,
+                                      detail::kReadAccess});
+  }
 }
 
 std::vector<DebugTarget> SceneSnapshot::debug_targets() const {

@@ -37,36 +37,29 @@ public:
   Result<void> init(const EffectCreateInfo& info) {
     ctx_ = info.context;
     release_ = DeferredRelease(info.frames_in_flight);
-    auto ring = UniformRing::create(*ctx_, {.block_size = sizeof(Block),
-                                            .frames_in_flight = info.frames_in_flight,
-                                            .label = "probe_mirror uniforms"});
-    auto sets = DescriptorSets::create(
-        *ctx_, {.bindings = {{.binding = 0,
-                              .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
-                              .stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-                             {.binding = 1}},
-                .frames_in_flight = info.frames_in_flight,
-                .label = "probe_mirror descriptors"});
-    auto quad = Surfaces::shape(*ctx_, Shape::quad);
-    if (!ring || !sets || !quad) {
-      return !ring ? ring.error() : !sets ? sets.error() : quad.error();
-    }
-    ring_ = std::move(*ring);
-    sets_ = std::move(*sets);
-    quad_ = std::move(*quad);
+    SNELL_ASSIGN_OR_RETURN(ring_,
+                           UniformRing::create(*ctx_, {.block_size = sizeof(Block),
+                                                       .frames_in_flight = info.frames_in_flight}));
+    const DescriptorBinding uniforms{.binding = 0,
+                                     .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                                     .stages =
+                                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT};
+    SNELL_ASSIGN_OR_RETURN(
+        sets_, DescriptorSets::create(*ctx_, {.bindings = {uniforms, {.binding = 1}},
+                                              .frames_in_flight = info.frames_in_flight}));
     sets_.set_buffer(0, ring_.buffer(), 0, ring_.block_size());
-    GraphicsPipelineDesc pd;
-    pd.label = "probe_mirror surface";
-    pd.vertex = probe_mirror::shaders::probe_mirror_vert;
-    pd.fragment = probe_mirror::shaders::probe_mirror_frag;
-    pd.set_layouts = {sets_.layout()};
+    SNELL_ASSIGN_OR_RETURN(quad_, Surfaces::shape(*ctx_, Shape::quad));
+    return make_pipeline(info);
+  }
+
+  Result<void> make_pipeline(const EffectCreateInfo& info) {
+    GraphicsPipelineDesc pd{.label = "probe_mirror surface",
+                            .vertex = probe_mirror::shaders::probe_mirror_vert,
+                            .fragment = probe_mirror::shaders::probe_mirror_frag,
+                            .set_layouts = {sets_.layout()}};
     pd.state.color_formats = {info.color_format};
     pd.state.depth_format = info.depth_format;
-    auto pipeline = Pipeline::create(*ctx_, pd);
-    if (!pipeline) {
-      return pipeline.error();
-    }
-    pipeline_ = std::move(*pipeline);
+    SNELL_ASSIGN_OR_RETURN(pipeline_, Pipeline::create(*ctx_, pd));
     return {};
   }
 
@@ -97,10 +90,8 @@ public:
 
   Result<void> record_passes(VkCommandBuffer cmd, const FrameInfo& info,
                              SceneSource& scene) override {
-    ScenePass pass;
-    pass.name = "probe_mirror.reflection";
-    pass.view = view_;
-    return record_scene_pass(cmd, scene, target_.target(), pass, info.timer);
+    return record_scene_pass(cmd, scene, target_.target(),
+                             {.name = "probe_mirror.reflection", .view = view_}, info.timer);
   }
 
   Result<void> record_draw(VkCommandBuffer cmd, const FrameInfo& info) override {
@@ -114,13 +105,12 @@ public:
     if (!offset) {
       return offset.error();
     }
-    sets_.set_image(1, target_.target().color_view(),
-                    ctx_->sampler(StandardSampler::linear_clamp));
+    sets_.set_image(1, target_.target().color_view(), ctx_->sampler(StandardSampler::linear_clamp));
     pipeline_.bind(cmd);
     vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
     vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
-    sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), info.frame_index,
-               &*offset, 1);
+    sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), info.frame_index, &*offset,
+               1);
     quad_.draw(cmd, 0);
     return {};
   }
