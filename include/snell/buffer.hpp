@@ -23,12 +23,6 @@ struct BufferDesc {
   const char* debug_name = "buffer";          ///< Used in error messages. Default "buffer".
 };
 
-class Buffer;
-namespace detail {
-/// Internal: Buffer::create on the context's state (used by other resources for staging).
-Result<Buffer> create_buffer(const Context::Impl& ctx, const BufferDesc& desc);
-} // namespace detail
-
 /// A VkBuffer with its own memory. Must not outlive the Context it was created from.
 class Buffer {
 public:
@@ -53,9 +47,9 @@ public:
   [[nodiscard]] explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
 
 private:
-  friend Result<Buffer> detail::create_buffer(const Context::Impl&, const BufferDesc&);
+  friend Result<Buffer> create_buffer(const ContextState& ctx, const BufferDesc& desc);
   void reset();
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkDeviceSize size_ = 0;

@@ -16,13 +16,13 @@ namespace snell {
 
 /// Description of one physical device, as `snell info` prints it.
 struct DeviceInfo {
-  std::string name; ///< VkPhysicalDeviceProperties::deviceName.
+  std::string name{}; ///< VkPhysicalDeviceProperties::deviceName.
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER; ///< Discrete, integrated, CPU, ...
   std::uint32_t api_version = 0;                             ///< Vulkan version the driver reports.
-  std::string driver;                                        ///< Driver name and info.
+  std::string driver{};                                      ///< Driver name and info.
   float timestamp_period_ns = 0.0f; ///< Nanoseconds per timestamp tick (0: no timestamps).
   bool suitable = false;            ///< Meets Snell's requirements (see `missing`).
-  std::string missing;              ///< Why it is not suitable (empty when suitable).
+  std::string missing{};            ///< Why it is not suitable (empty when suitable).
 };
 
 /// Options for Context::create. Every field has a default that works headless.
@@ -33,7 +33,7 @@ struct ContextDesc {
   /// Which device: "" (default: the SNELL_DEVICE environment variable, else the best device:
   /// discrete GPU, then integrated, then virtual, then CPU), "lavapipe" (Mesa's CPU driver),
   /// "gpu" (any non-CPU device), or a case-insensitive substring of the device name.
-  std::string device;
+  std::string device{};
   /// Application name reported to the driver. Default "snell".
   std::string app_name = "snell";
 };
@@ -63,6 +63,9 @@ enum class StandardSampler : std::uint8_t {
 };
 /// Number of StandardSampler values.
 inline constexpr std::uint32_t kStandardSamplerCount = 3;
+
+/// The Context's internal state (opaque to users; defined inside the runtime).
+struct ContextState;
 
 /// Owns (or borrows) the instance, device and queue that every Snell object uses.
 /// Move-only. Every resource created from a Context must be destroyed before it.
@@ -112,13 +115,11 @@ public:
   [[nodiscard]] Result<std::uint32_t> find_memory_type(std::uint32_t type_bits,
                                                        VkMemoryPropertyFlags properties) const;
 
-  struct Impl;
-  /// Internal state, stable across moves (resources keep this pointer).
-  [[nodiscard]] Impl* impl() const { return impl_.get(); }
-
 private:
-  explicit Context(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+  /// The runtime's access to the state (resources keep a pointer to it: it survives moves).
+  friend const ContextState* context_state(const Context& ctx) noexcept;
+  explicit Context(std::unique_ptr<ContextState> state);
+  std::unique_ptr<ContextState> impl_;
 };
 
 } // namespace snell

@@ -40,7 +40,7 @@ enum class DebugKind : std::uint8_t {
 
 /// An image an effect exposes for debugging (overlay thumbnails, tests).
 struct DebugTarget {
-  std::string name;                  ///< "water.reflection", "probe.face+x", ...
+  std::string name{};                ///< "water.reflection", "probe.face+x", ...
   DebugKind kind = DebugKind::color; ///< What `view` shows. Default color.
   /// A 2D view of exactly the level and layer shown, in SHADER_READ_ONLY_OPTIMAL whenever
   /// debug_targets() may be read (toolkit targets are, from creation on).
@@ -76,21 +76,21 @@ using ParamValue = std::variant<bool, int, float, glm::vec2, glm::vec3, glm::vec
 
 /// One parameter's description.
 struct ParamSpec {
-  std::string name; ///< Key for set_param, e.g. "wave_height".
+  std::string name{}; ///< Key for set_param, e.g. "wave_height".
   ParamType type = ParamType::number;
-  ParamValue default_value = 0.0f;  ///< Must equal the typed struct's default (tested).
-  float min = 0.0f;                 ///< Inclusive lower bound (numbers, integers, vectors).
-  float max = 0.0f;                 ///< Inclusive upper bound.
-  std::vector<std::string> choices; ///< Valid values of an enumeration.
-  std::string unit;                 ///< "m", "m/s", "1/m", "" for none.
-  std::string doc;                  ///< One line: what it does.
+  ParamValue default_value = 0.0f;    ///< Must equal the typed struct's default (tested).
+  float min = 0.0f;                   ///< Inclusive lower bound (numbers, integers, vectors).
+  float max = 0.0f;                   ///< Inclusive upper bound.
+  std::vector<std::string> choices{}; ///< Valid values of an enumeration.
+  std::string unit{};                 ///< "m", "m/s", "1/m", "" for none.
+  std::string doc{};                  ///< One line: what it does.
 };
 
 /// An effect's parameters.
 struct ParamSchema {
-  std::string effect; ///< The registered name, e.g. "water".
-  std::string doc;    ///< One line about the effect.
-  std::vector<ParamSpec> params;
+  std::string effect{}; ///< The registered name, e.g. "water".
+  std::string doc{};    ///< One line about the effect.
+  std::vector<ParamSpec> params{};
   /// The parameter called `name`, or nullptr.
   [[nodiscard]] const ParamSpec* find(std::string_view name) const;
   /// "a, b, c": every key (for error messages).
@@ -112,8 +112,8 @@ struct FrameInfo {
   /// recording frame N are destroyed once frame N + frames_in_flight is recorded (the host's
   /// fence for frame N has then been waited on). Default 0.
   std::uint64_t frame_index = 0;
-  SceneView main_view;       ///< The host's main view: matrices, eye, extent, formats.
-  DirectionalLight light;    ///< The scene's light (for specular highlights).
+  SceneView main_view{};     ///< The host's main view: matrices, eye, extent, formats.
+  DirectionalLight light{};  ///< The scene's light (for specular highlights).
   GpuTimer* timer = nullptr; ///< Optional: effects time their passes with it. Default none.
   /// The host's scene snapshot, set for the whole frame (update, record_passes, record_draw)
   /// when the host copies one for effects that want it (Effect::wants_snapshot); its images
@@ -202,8 +202,8 @@ public:
 
 private:
   struct Entry {
-    EffectFactory factory;
-    ParamSchema schema;
+    EffectFactory factory{};
+    ParamSchema schema{};
   };
   std::map<std::string, Entry, std::less<>> entries_;
 };

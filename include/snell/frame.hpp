@@ -27,14 +27,14 @@ struct FrameDesc {
 
 /// What one rendered frame cost and what went wrong in it.
 struct FrameStats {
-  std::vector<PassTime> passes;      ///< GPU time of each pass, in order ("frame" is the whole).
+  std::vector<PassTime> passes{};    ///< GPU time of each pass, in order ("frame" is the whole).
   double gpu_ms = 0.0;               ///< GPU time of the whole frame (timestamps).
   double cpu_ms = 0.0;               ///< Wall time from recording to the fence signalling.
   std::uint64_t frame_index = 0;     ///< The FrameInfo::frame_index this frame used (1, 2, ...).
   std::uint32_t snapshot_copies = 0; ///< Scene snapshots copied this frame (0 or 1).
   /// Effects skipped this frame because update(), record_passes() or record_draw() failed:
   /// "<type>: <message>" each (code and VkResult kept). The rest of the frame was rendered.
-  std::vector<Error> effect_errors;
+  std::vector<Error> effect_errors{};
 };
 
 /// The main view of a camera for a `width` x `height` output: y-flipped Vulkan projection with
@@ -66,9 +66,8 @@ public:
   /// Reads the output back (RGBA8, sRGB-encoded for the default format).
   [[nodiscard]] Result<Image> read_color() const;
 
-  struct Impl;
-
 private:
+  struct Impl;
   explicit FrameRenderer(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

@@ -10,8 +10,8 @@ namespace snell {
 
 /// One timed pass of a frame.
 struct PassTime {
-  std::string name; ///< Pass name ("main", "water.reflection", ...).
-  double ms = 0.0;  ///< GPU time in milliseconds.
+  std::string name{}; ///< Pass name ("main", "water.reflection", ...).
+  double ms = 0.0;    ///< GPU time in milliseconds.
 };
 
 /// Records timestamp pairs around named passes in one command buffer and reads them after the
@@ -37,7 +37,7 @@ public:
   [[nodiscard]] Result<std::vector<PassTime>> read() const;
 
 private:
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   VkQueryPool pool_ = VK_NULL_HANDLE;
   std::uint32_t max_ = 0;
   std::vector<std::string> names_;

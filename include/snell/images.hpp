@@ -96,11 +96,9 @@ public:
 
 private:
   void reset();
-  /// Clears colour (all levels) and depth and leaves them SHADER_READ_ONLY_OPTIMAL.
-  void clear_to_samplable(VkCommandBuffer cmd) const;
   /// Ends the rendering and finishes colour (mips, SHADER_READ_ONLY_OPTIMAL).
   void finish_color(VkCommandBuffer cmd) const;
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   std::uint32_t width_ = 0, height_ = 0, mips_ = 1;
   ColorFormat format_ = ColorFormat::rgba8_unorm;
   VkImage color_ = VK_NULL_HANDLE, depth_ = VK_NULL_HANDLE;
@@ -157,7 +155,7 @@ public:
 
 private:
   void reset();
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   std::uint32_t size_ = 0, mips_ = 1;
   ColorFormat format_ = ColorFormat::rgba8_unorm;
   VkImage color_ = VK_NULL_HANDLE, depth_ = VK_NULL_HANDLE;
@@ -194,7 +192,7 @@ public:
 
 private:
   void reset();
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
@@ -227,7 +225,7 @@ public:
   [[nodiscard]] VkSampler handle() const { return sampler_; }
 
 private:
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   VkSampler sampler_ = VK_NULL_HANDLE;
 };
 

@@ -107,7 +107,7 @@ public:
     ParamSpec spec{
         std::move(name), ParamType::enumeration, std::string(), 0.0f, 0.0f, std::move(choices), "",
         std::move(doc)};
-    Entry entry;
+    Entry entry{};
     entry.get = [member](const ParamSchema& schema, const ParamSpec& s,
                          const P& p) -> Result<ParamValue> {
       const auto index = static_cast<long long>(p.*member);
@@ -141,7 +141,7 @@ public:
                    std::move(choices),
                    "",
                    std::move(doc)};
-    Entry entry;
+    Entry entry{};
     entry.set = [apply = std::move(apply)](const ParamSpec&, P& p, const ParamValue& v) {
       apply(p, std::get<std::string>(v));
     };
@@ -217,7 +217,7 @@ private:
                     std::string unit, std::string doc) {
     ParamSpec spec{std::move(name), type,          ParamValue{T()}, min, max, {},
                    std::move(unit), std::move(doc)};
-    Entry entry;
+    Entry entry{};
     entry.get = [member](const ParamSchema&, const ParamSpec&, const P& p) -> Result<ParamValue> {
       return ParamValue{p.*member};
     };

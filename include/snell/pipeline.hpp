@@ -26,7 +26,7 @@ create_shader_module(VkDevice device, Span<const std::uint32_t> code, std::strin
 /// and front face (mirrored passes swap the front face per draw).
 struct RasterState {
   /// One format per colour attachment, in attachment order. Default: none (depth only).
-  std::vector<VkFormat> color_formats;
+  std::vector<VkFormat> color_formats{};
   VkFormat depth_format = VK_FORMAT_UNDEFINED; ///< Depth attachment format; UNDEFINED = none.
   /// Samples per pixel of the attachments. Default 1.
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
@@ -50,19 +50,19 @@ create_graphics_pipeline(VkDevice device, VkShaderModule vertex, VkShaderModule 
 /// A graphics pipeline described with SPIR-V: what Pipeline::create takes.
 struct GraphicsPipelineDesc {
   const char* label = "graphics pipeline"; ///< Names the pipeline in errors. Required non-null.
-  Span<const std::uint32_t> vertex;        ///< Vertex shader SPIR-V (entry "main"). Required.
-  Span<const std::uint32_t> fragment;      ///< Fragment shader SPIR-V (entry "main"). Required.
-  std::vector<VkDescriptorSetLayout> set_layouts;  ///< Set i = set_layouts[i]. Default none.
-  std::vector<VkPushConstantRange> push_constants; ///< Default none.
-  RasterState state; ///< Attachments, samples, view mask, depth, blending, topology.
+  Span<const std::uint32_t> vertex{};      ///< Vertex shader SPIR-V (entry "main"). Required.
+  Span<const std::uint32_t> fragment{};    ///< Fragment shader SPIR-V (entry "main"). Required.
+  std::vector<VkDescriptorSetLayout> set_layouts{};  ///< Set i = set_layouts[i]. Default none.
+  std::vector<VkPushConstantRange> push_constants{}; ///< Default none.
+  RasterState state{}; ///< Attachments, samples, view mask, depth, blending, topology.
 };
 
 /// A compute pipeline described with SPIR-V.
 struct ComputePipelineDesc {
   const char* label = "compute pipeline"; ///< Names the pipeline in errors. Required non-null.
-  Span<const std::uint32_t> compute;      ///< Compute shader SPIR-V (entry "main"). Required.
-  std::vector<VkDescriptorSetLayout> set_layouts;  ///< Default none.
-  std::vector<VkPushConstantRange> push_constants; ///< Default none.
+  Span<const std::uint32_t> compute{};    ///< Compute shader SPIR-V (entry "main"). Required.
+  std::vector<VkDescriptorSetLayout> set_layouts{};  ///< Default none.
+  std::vector<VkPushConstantRange> push_constants{}; ///< Default none.
 };
 
 /// A pipeline and its layout (RAII, move-only). Must not outlive its Context.

@@ -13,9 +13,9 @@ namespace snell {
 
 /// A float RGBA image on the CPU, rows top first (linear values for float targets).
 struct FloatImage {
-  std::uint32_t width = 0;  ///< Pixels.
-  std::uint32_t height = 0; ///< Pixels.
-  std::vector<float> rgba;  ///< width * height * 4 values.
+  std::uint32_t width = 0;   ///< Pixels.
+  std::uint32_t height = 0;  ///< Pixels.
+  std::vector<float> rgba{}; ///< width * height * 4 values.
 };
 
 /// Reads mip `level` of a render target's colour image as stored: RGBA8 bytes for 8-bit formats
@@ -32,13 +32,6 @@ struct FloatImage {
                                                  std::uint32_t face, std::uint32_t level = 0);
 /// Reads a render target's depth image (after end_rendering) as floats in [0,1].
 [[nodiscard]] Result<std::vector<float>> read_depth(const Context& ctx, const RenderTarget& target);
-
-namespace detail {
-/// Internal: the readbacks on the context's state (for objects that keep only that).
-Result<Image> read_rgba8(const Context::Impl& ctx, const RenderTarget& target, std::uint32_t level);
-Result<FloatImage> read_float(const Context::Impl& ctx, const RenderTarget& target,
-                              std::uint32_t level);
-} // namespace detail
 
 /// Reads an effect's debug target (level 0) as floats: colour formats RGBA8 UNORM/SRGB (sRGB
 /// decoded to linear) and RGBA16F, or D32 depth (in the red channel). The effect's passes must

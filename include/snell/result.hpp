@@ -31,7 +31,7 @@ enum class ErrorCode {
 /// A failure: its kind and a readable, specific message.
 struct Error {
   ErrorCode code = ErrorCode::invalid_argument; ///< Kind of failure. Default invalid_argument.
-  std::string message;                          ///< Human-readable; names file/parameter/value.
+  std::string message{};                        ///< Human-readable; names file/parameter/value.
   /// The VkResult of the Vulkan call that failed (code vulkan_error or out_of_memory), as its
   /// integer value; 0 (VK_SUCCESS) when the failure did not come from Vulkan. Default 0.
   std::int32_t vk_result = 0;

@@ -33,11 +33,11 @@ struct Vertex {
 
 /// An 8-bit RGBA image in memory, rows top first.
 struct Image {
-  std::string name;                ///< Source file or generator name (for messages).
-  std::uint32_t width = 0;         ///< Pixels; > 0 for a usable image.
-  std::uint32_t height = 0;        ///< Pixels; > 0 for a usable image.
-  std::vector<std::uint8_t> rgba8; ///< width * height * 4 bytes.
-  bool srgb = true;                ///< Colour data (sRGB) or linear data (normal maps).
+  std::string name{};                ///< Source file or generator name (for messages).
+  std::uint32_t width = 0;           ///< Pixels; > 0 for a usable image.
+  std::uint32_t height = 0;          ///< Pixels; > 0 for a usable image.
+  std::vector<std::uint8_t> rgba8{}; ///< width * height * 4 bytes.
+  bool srgb = true;                  ///< Colour data (sRGB) or linear data (normal maps).
 };
 
 /// glTF alpha modes.
@@ -45,7 +45,7 @@ enum class AlphaMode : std::uint8_t { opaque, mask, blend };
 
 /// A surface material (glTF metallic-roughness subset plus the extensions Snell reads).
 struct Material {
-  std::string name;
+  std::string name{};
   glm::vec4 base_color{1.0f};  ///< Linear RGBA factor. Default white, opaque.
   int base_color_texture = -1; ///< Index into Scene::images, or -1 for none.
   int normal_texture = -1;     ///< Index into Scene::images (linear), or -1.
@@ -64,15 +64,15 @@ struct Material {
 
 /// A triangle list with one material (a glTF primitive).
 struct Mesh {
-  std::string name;
-  std::vector<Vertex> vertices;
-  std::vector<std::uint32_t> indices; ///< Triangle list; always indexed after loading.
-  int material = -1;                  ///< Index into Scene::materials, or -1 for the default.
+  std::string name{};
+  std::vector<Vertex> vertices{};
+  std::vector<std::uint32_t> indices{}; ///< Triangle list; always indexed after loading.
+  int material = -1;                    ///< Index into Scene::materials, or -1 for the default.
 };
 
 /// An instance of a mesh in the world.
 struct Object {
-  std::string name;
+  std::string name{};
   int mesh = -1;                         ///< Index into Scene::meshes.
   glm::mat4 transform{1.0f};             ///< Object to world at time 0.
   std::uint32_t layers = layer::all;     ///< Bit mask of snell::layer values. Default all.
@@ -84,7 +84,7 @@ struct Object {
 
 /// A perspective camera.
 struct CameraDesc {
-  std::string name;
+  std::string name{};
   glm::vec3 eye{0.0f, 2.0f, 8.0f}; ///< World position.
   glm::vec3 target{0.0f};          ///< World point looked at.
   glm::vec3 up{0.0f, 1.0f, 0.0f};  ///< Approximate up.
@@ -104,7 +104,7 @@ struct Sky {
 /// quad, the centre sphere of a cube-map probe). Built-in scenes define them; effects look them
 /// up by name so that a scene and an effect need not know each other.
 struct Anchor {
-  std::string name;         ///< E.g. "water", "window", "probe".
+  std::string name{};       ///< E.g. "water", "window", "probe".
   glm::vec3 position{0.0f}; ///< World-space centre.
   glm::vec3 size{0.0f};     ///< World-space extent (full width, height, depth).
   int object = -1;          ///< The object it belongs to (index into Scene::objects), or -1.
@@ -112,15 +112,15 @@ struct Anchor {
 
 /// A complete scene.
 struct Scene {
-  std::string name;
-  std::vector<Mesh> meshes;
-  std::vector<Material> materials;
-  std::vector<Image> images;
-  std::vector<Object> objects;
-  std::vector<CameraDesc> cameras; ///< cameras[0] is the default view when present.
-  std::vector<Anchor> anchors;     ///< Named places for effects (see Anchor).
-  DirectionalLight light;
-  Sky sky;
+  std::string name{};
+  std::vector<Mesh> meshes{};
+  std::vector<Material> materials{};
+  std::vector<Image> images{};
+  std::vector<Object> objects{};
+  std::vector<CameraDesc> cameras{}; ///< cameras[0] is the default view when present.
+  std::vector<Anchor> anchors{};     ///< Named places for effects (see Anchor).
+  DirectionalLight light{};
+  Sky sky{};
   /// The anchor called `name`, or nullptr.
   [[nodiscard]] const Anchor* find_anchor(std::string_view name) const;
   /// Axis-aligned bounds of all objects at time 0 (min, max); empty scene: zero box.

@@ -42,9 +42,8 @@ public:
   /// The scene as uploaded (objects, cameras, light, anchors).
   [[nodiscard]] const Scene& scene() const;
 
-  struct Impl;
-
 private:
+  struct Impl;
   explicit SceneRenderer(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

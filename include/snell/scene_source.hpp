@@ -23,7 +23,7 @@ struct SceneView {
   /// not flipped for cube faces; may be oblique.
   glm::mat4 proj{1.0f};
   glm::vec3 eye{0.0f};                    ///< World-space eye (mirrored eye for mirrored views).
-  std::optional<Plane> clip_plane;        ///< World plane; only its positive side is drawn.
+  std::optional<Plane> clip_plane{};      ///< World plane; only its positive side is drawn.
   std::uint32_t layer_mask = layer::main; ///< Objects drawn: those with (layers & mask) != 0.
   /// Swap the pipeline's front face. True when the view flips winding an odd number of times
   /// (mirrored view XOR unflipped-y projection): use `needs_front_face_flip(view, proj)`.

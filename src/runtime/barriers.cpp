@@ -30,6 +30,38 @@ void barrier(VkCommandBuffer cmd, const ImageBarrier* barriers, std::uint32_t co
   vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+void clear_to_shader_read(VkCommandBuffer cmd, VkImage color, std::uint32_t mips,
+                          std::uint32_t layers, VkImage depth) {
+  ImageBarrier to_dst[2] = {
+      {color, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips, 0, layers, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+      {depth, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, layers, VK_IMAGE_LAYOUT_UNDEFINED,
+       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+       VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+  };
+  const std::uint32_t count = depth != VK_NULL_HANDLE ? 2 : 1;
+  barrier(cmd, to_dst, count);
+  const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 0.0f}};
+  const VkImageSubresourceRange colors{VK_IMAGE_ASPECT_COLOR_BIT, 0, mips, 0, layers};
+  vkCmdClearColorImage(cmd, color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &colors);
+  if (depth != VK_NULL_HANDLE) {
+    const VkClearDepthStencilValue far{1.0f, 0};
+    const VkImageSubresourceRange depths{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, layers};
+    vkCmdClearDepthStencilImage(cmd, depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1, &depths);
+  }
+  ImageBarrier to_read[2] = {to_dst[0], to_dst[1]};
+  for (ImageBarrier& b : to_read) {
+    b.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    b.new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    b.src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+    b.src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    b.dst_stage = kReadStages;
+    b.dst_access = kReadAccess;
+  }
+  barrier(cmd, to_read, count);
+}
+
 void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view,
                      VkExtent2D extent, std::uint32_t view_mask, const float* clear,
                      float clear_depth, bool store_depth, bool load_depth) {

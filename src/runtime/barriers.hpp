@@ -41,6 +41,13 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView color, VkImageView depth, 
                      std::uint32_t view_mask, const float* clear, float clear_depth,
                      bool store_depth, bool load_depth = false);
 
+/// Puts a fresh image (layout UNDEFINED) into the state of a target that is samplable before its
+/// first pass: colour (`mips` levels x `layers` layers) cleared to transparent black and, when
+/// `depth` is not null, depth (level 0, `layers` layers) cleared to 1 (far); both end in
+/// SHADER_READ_ONLY_OPTIMAL, visible to kReadStages.
+void clear_to_shader_read(VkCommandBuffer cmd, VkImage color, std::uint32_t mips,
+                          std::uint32_t layers, VkImage depth);
+
 /// Generates mip levels 1..mips-1 of `layers` layers by linear blits from level 0.
 /// Expects level 0 in `level0_layout` after writes in `src_stage`/`src_access`; leaves every
 /// level in SHADER_READ_ONLY_OPTIMAL, visible to kReadStages.

@@ -2,6 +2,7 @@
 #include <snell/buffer.hpp>
 
 #include "context_impl.hpp"
+#include "runtime_internal.hpp"
 #include "vk_util.hpp"
 
 #include <cstring>
@@ -12,11 +13,10 @@ namespace snell {
 using detail::vk_init;
 
 Result<Buffer> Buffer::create(const Context& context, const BufferDesc& desc) {
-  return detail::create_buffer(*context.impl(), desc);
+  return create_buffer(*context_state(context), desc);
 }
 
-namespace detail {
-Result<Buffer> create_buffer(const Context::Impl& ctx, const BufferDesc& desc) {
+Result<Buffer> create_buffer(const ContextState& ctx, const BufferDesc& desc) {
   const std::string name = desc.debug_name != nullptr ? desc.debug_name : "buffer";
   if (desc.size == 0) {
     return fail(ErrorCode::invalid_argument, name + ": BufferDesc::size must be > 0");
@@ -58,7 +58,6 @@ Result<Buffer> create_buffer(const Context::Impl& ctx, const BufferDesc& desc) {
   }
   return b;
 }
-} // namespace detail
 
 Buffer::Buffer(Buffer&& other) noexcept
     : ctx_(std::exchange(other.ctx_, nullptr)),
@@ -117,8 +116,10 @@ Result<void> Buffer::upload(const void* data, VkDeviceSize bytes, VkDeviceSize o
     return {};
   }
   // Staging path: a temporary host buffer and a blocking copy (uploads happen at load time).
-  auto staging = detail::create_buffer(
-      *ctx_, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "staging"});
+  auto staging = create_buffer(*ctx_, BufferDesc{.size = bytes,
+                                                 .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                                 .memory = MemoryUsage::upload,
+                                                 .debug_name = "staging"});
   if (!staging) {
     return staging.error();
   }

@@ -151,7 +151,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBit
                                               VkDebugUtilsMessageTypeFlagsEXT /*types*/,
                                               const VkDebugUtilsMessengerCallbackDataEXT* data,
                                               void* user) {
-  auto* impl = static_cast<Context::Impl*>(user);
+  auto* impl = static_cast<ContextState*>(user);
   const bool error = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) != 0;
   if (error) {
     ++impl->errors;
@@ -169,7 +169,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBit
   return VK_FALSE;
 }
 
-Result<VkInstance> create_instance(const ContextDesc& desc, bool validation, Context::Impl& impl) {
+Result<VkInstance> create_instance(const ContextDesc& desc, bool validation, ContextState& impl) {
   VkApplicationInfo app = vk_init<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
   app.pApplicationName = desc.app_name.c_str();
   app.pEngineName = "snell";
@@ -269,7 +269,7 @@ Result<VkPhysicalDevice> choose_device(VkInstance instance, const std::string& r
   return best;
 }
 
-Result<void> init_common(Context::Impl& impl) {
+Result<void> init_common(ContextState& impl) {
   impl.info = describe(impl.physical_device);
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(impl.physical_device, &props);
@@ -301,7 +301,7 @@ Result<void> init_common(Context::Impl& impl) {
 
 } // namespace
 
-Context::Impl::~Impl() {
+ContextState::~ContextState() {
   if (device != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(device);
     if (fence != VK_NULL_HANDLE) {
@@ -334,13 +334,13 @@ Context::Impl::~Impl() {
   }
 }
 
-Context::Context(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Context::Context(std::unique_ptr<ContextState> impl) : impl_(std::move(impl)) {}
 Context::Context(Context&&) noexcept = default;
 Context& Context::operator=(Context&&) noexcept = default;
 Context::~Context() = default;
 
 Result<Context> Context::create(const ContextDesc& desc) {
-  auto impl = std::make_unique<Impl>();
+  auto impl = std::make_unique<ContextState>();
   impl->owns = true;
   impl->validation = desc.validation || env_flag("SNELL_VALIDATION");
   auto instance = create_instance(desc, impl->validation, *impl);
@@ -452,7 +452,7 @@ Result<Context> Context::adopt(const AdoptInfo& info) {
                       " enabled (enable them in the VkDeviceCreateInfo pNext chain)");
     }
   }
-  auto impl = std::make_unique<Impl>();
+  auto impl = std::make_unique<ContextState>();
   impl->owns = false;
   impl->instance = info.instance;
   impl->physical_device = info.physical_device;
@@ -466,7 +466,7 @@ Result<Context> Context::adopt(const AdoptInfo& info) {
 }
 
 Result<std::vector<DeviceInfo>> Context::enumerate_devices() {
-  Impl scratch;
+  ContextState scratch;
   scratch.owns = true;
   auto instance = create_instance(ContextDesc{}, false, scratch);
   if (!instance) {
@@ -515,6 +515,10 @@ std::vector<std::string> Context::validation_messages() const {
   return impl_->messages;
 }
 
+const ContextState* context_state(const Context& ctx) noexcept {
+  return ctx.impl_.get();
+}
+
 const VkPhysicalDeviceLimits& Context::limits() const {
   return impl_->limits;
 }
@@ -533,8 +537,8 @@ Result<std::uint32_t> Context::find_memory_type(std::uint32_t type_bits,
 }
 
 Result<void>
-Context::Impl::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
-  const Impl* impl_ = this;
+ContextState::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
+  const ContextState* impl_ = this;
   std::lock_guard<std::mutex> lock(impl_->submit_mutex);
   VkCommandBufferAllocateInfo ai =
       vk_init<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
@@ -568,8 +572,8 @@ Context::Impl::submit_and_wait(const std::function<void(VkCommandBuffer)>& recor
   return {};
 }
 
-Result<std::uint32_t> Context::Impl::find_memory_type(std::uint32_t type_bits,
-                                                      VkMemoryPropertyFlags properties) const {
+Result<std::uint32_t> ContextState::find_memory_type(std::uint32_t type_bits,
+                                                     VkMemoryPropertyFlags properties) const {
   const auto& mem = memory;
   for (std::uint32_t i = 0; i < mem.memoryTypeCount; ++i) {
     if ((type_bits & (1u << i)) != 0 &&

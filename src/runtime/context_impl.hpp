@@ -11,7 +11,8 @@
 
 namespace snell {
 
-struct Context::Impl {
+/// The state behind snell::Context (stable across moves: resources keep a pointer to it).
+struct ContextState {
   VkInstance instance = VK_NULL_HANDLE;
   VkPhysicalDevice physical_device = VK_NULL_HANDLE;
   VkDevice device = VK_NULL_HANDLE;
@@ -36,12 +37,15 @@ struct Context::Impl {
   VkFence fence = VK_NULL_HANDLE;
   mutable std::mutex submit_mutex;
 
-  ~Impl();
+  ~ContextState();
 
   /// See Context::submit_and_wait / Context::find_memory_type.
   Result<void> submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
   Result<std::uint32_t> find_memory_type(std::uint32_t type_bits,
                                          VkMemoryPropertyFlags properties) const;
 };
+
+/// The state of `ctx` (never null for a valid context).
+const ContextState* context_state(const Context& ctx) noexcept;
 
 } // namespace snell

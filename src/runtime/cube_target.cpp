@@ -14,7 +14,7 @@ using detail::vk_init;
 using detail::ImageBarrier;
 
 Result<CubeTarget> CubeTarget::create(const Context& context, const CubeTargetDesc& desc) {
-  const Context::Impl& ctx = *context.impl();
+  const ContextState& ctx = *context_state(context);
   const std::string name = desc.debug_name != nullptr ? desc.debug_name : "cube target";
   if (auto r = detail::check_extent(ctx, name + " (CubeTargetDesc::size)", desc.size, desc.size);
       !r) {
@@ -76,6 +76,14 @@ Result<CubeTarget> CubeTarget::create(const Context& context, const CubeTargetDe
                f, 1, t.depth_face_views_[f]);
     }
   }
+  if (!r) {
+    return r.error();
+  }
+  // Samplable from creation on (like every toolkit target): a surface may sample a cube whose
+  // capture has not run yet. Cleared to transparent black, SHADER_READ_ONLY_OPTIMAL.
+  r = ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    detail::clear_to_shader_read(cmd, t.color_, t.mips_, 6, VK_NULL_HANDLE);
+  });
   if (!r) {
     return r.error();
   }

@@ -14,7 +14,7 @@
 
 namespace snell::detail {
 
-Result<DebugOverlay> DebugOverlay::create(const Context::Impl& ctx, VkFormat color_format) {
+Result<DebugOverlay> DebugOverlay::create(const ContextState& ctx, VkFormat color_format) {
   DebugOverlay o;
   o.ctx_ = &ctx;
   const VkDevice d = ctx.device;

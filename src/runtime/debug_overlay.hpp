@@ -10,7 +10,7 @@ namespace snell::detail {
 
 class DebugOverlay {
 public:
-  static Result<DebugOverlay> create(const Context::Impl& ctx, VkFormat color_format);
+  static Result<DebugOverlay> create(const ContextState& ctx, VkFormat color_format);
   DebugOverlay() = default;
   DebugOverlay(DebugOverlay&& o) noexcept;
   DebugOverlay& operator=(DebugOverlay&& o) noexcept;
@@ -28,7 +28,7 @@ public:
 
 private:
   void swap(DebugOverlay& o) noexcept;
-  const Context::Impl* ctx_ = nullptr;
+  const ContextState* ctx_ = nullptr;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -7,6 +7,7 @@
 
 #include "context_impl.hpp"
 #include "debug_overlay.hpp"
+#include "runtime_internal.hpp"
 #include "vk_util.hpp"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ SceneView make_main_view(const CameraDesc& camera, std::uint32_t width, std::uin
 
 struct FrameRenderer::Impl {
   const Context* context = nullptr;
-  const Context::Impl* ctx = nullptr;
+  const ContextState* ctx = nullptr;
   FrameDesc desc;
   RenderTarget target;
   GpuTimer timer;
@@ -59,7 +60,7 @@ FrameRenderer::~FrameRenderer() = default;
 Result<FrameRenderer> FrameRenderer::create(const Context& ctx, const FrameDesc& desc) {
   auto impl = std::make_unique<Impl>();
   impl->context = &ctx;
-  impl->ctx = ctx.impl();
+  impl->ctx = context_state(ctx);
   impl->desc = desc;
   RenderTargetDesc td;
   td.width = desc.width;
@@ -83,7 +84,8 @@ Result<FrameRenderer> FrameRenderer::create(const Context& ctx, const FrameDesc&
   }
   impl->snapshot = std::move(*snapshot);
   if (desc.debug_targets) {
-    auto overlay = detail::DebugOverlay::create(*ctx.impl(), impl->target.vk_color_format());
+    auto overlay =
+        detail::DebugOverlay::create(*context_state(ctx), impl->target.vk_color_format());
     if (!overlay) {
       return overlay.error();
     }

@@ -14,7 +14,7 @@ Result<GpuTimer> GpuTimer::create(const Context& ctx, std::uint32_t max_passes) 
     return fail(ErrorCode::invalid_argument, "GpuTimer::create: max_passes must be >= 1");
   }
   GpuTimer t;
-  t.ctx_ = ctx.impl();
+  t.ctx_ = context_state(ctx);
   t.max_ = max_passes;
   auto ci = vk_init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
   ci.queryType = VK_QUERY_TYPE_TIMESTAMP;

@@ -6,7 +6,7 @@
 
 namespace snell::detail {
 
-Result<void> create_image(const Context::Impl& ctx, const VkImageCreateInfo& ci, VkImage& image,
+Result<void> create_image(const ContextState& ctx, const VkImageCreateInfo& ci, VkImage& image,
                           VkDeviceMemory& memory, std::string_view name) {
   SNELL_VK_TRY(vkCreateImage(ctx.device, &ci, nullptr, &image), name);
   VkMemoryRequirements req{};
@@ -34,7 +34,7 @@ Result<void> create_image(const Context::Impl& ctx, const VkImageCreateInfo& ci,
   return {};
 }
 
-Result<VkImageView> create_view(const Context::Impl& ctx, VkImage image, VkImageViewType type,
+Result<VkImageView> create_view(const ContextState& ctx, VkImage image, VkImageViewType type,
                                 VkFormat format, VkImageAspectFlags aspect, std::uint32_t base_mip,
                                 std::uint32_t mip_count, std::uint32_t base_layer,
                                 std::uint32_t layer_count, std::string_view name) {
@@ -49,7 +49,7 @@ Result<VkImageView> create_view(const Context::Impl& ctx, VkImage image, VkImage
   return view;
 }
 
-Result<void> check_extent(const Context::Impl& ctx, std::string_view what, std::uint32_t width,
+Result<void> check_extent(const ContextState& ctx, std::string_view what, std::uint32_t width,
                           std::uint32_t height) {
   const std::uint32_t limit = std::min(kMaxImageDimension, ctx.limits.maxImageDimension2D);
   if (width == 0 || height == 0 || width > limit || height > limit) {
@@ -61,7 +61,7 @@ Result<void> check_extent(const Context::Impl& ctx, std::string_view what, std::
   return {};
 }
 
-void destroy(const Context::Impl* ctx, VkImage& image, VkDeviceMemory& memory) {
+void destroy(const ContextState* ctx, VkImage& image, VkDeviceMemory& memory) {
   if (ctx == nullptr) {
     return;
   }
@@ -75,7 +75,7 @@ void destroy(const Context::Impl* ctx, VkImage& image, VkDeviceMemory& memory) {
   memory = VK_NULL_HANDLE;
 }
 
-void destroy(const Context::Impl* ctx, VkImageView& view) {
+void destroy(const ContextState* ctx, VkImageView& view) {
   if (ctx != nullptr && view != VK_NULL_HANDLE) {
     vkDestroyImageView(ctx->device, view, nullptr);
   }

@@ -4,6 +4,7 @@
 
 #include "barriers.hpp"
 #include "context_impl.hpp"
+#include "runtime_internal.hpp"
 
 #include <stb_image_write.h>
 
@@ -17,13 +18,15 @@ namespace {
 using detail::ImageBarrier;
 
 /// Copies one subresource (in SHADER_READ_ONLY_OPTIMAL) into a host buffer and back.
-Result<std::vector<std::uint8_t>> read_subresource(const Context::Impl& ctx, VkImage image,
+Result<std::vector<std::uint8_t>> read_subresource(const ContextState& ctx, VkImage image,
                                                    VkImageAspectFlags aspect, std::uint32_t width,
                                                    std::uint32_t height, std::uint32_t level,
                                                    std::uint32_t layer, std::uint32_t texel_bytes) {
   const VkDeviceSize bytes = VkDeviceSize{width} * height * texel_bytes;
-  auto buffer = detail::create_buffer(
-      ctx, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback, "readback"});
+  auto buffer = create_buffer(ctx, BufferDesc{.size = bytes,
+                                              .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                              .memory = MemoryUsage::readback,
+                                              .debug_name = "readback"});
   if (!buffer) {
     return buffer.error();
   }
@@ -95,14 +98,14 @@ Result<FloatImage> to_float(const std::vector<std::uint8_t>& bytes, ColorFormat 
 } // namespace
 
 Result<Image> read_rgba8(const Context& ctx, const RenderTarget& target, std::uint32_t level) {
-  return detail::read_rgba8(*ctx.impl(), target, level);
+  return detail::read_rgba8(*context_state(ctx), target, level);
 }
 
 Result<FloatImage> read_float(const Context& ctx, const RenderTarget& target, std::uint32_t level) {
-  return detail::read_float(*ctx.impl(), target, level);
+  return detail::read_float(*context_state(ctx), target, level);
 }
 
-Result<Image> detail::read_rgba8(const Context::Impl& ctx, const RenderTarget& target,
+Result<Image> detail::read_rgba8(const ContextState& ctx, const RenderTarget& target,
                                  std::uint32_t level) {
   if (!target || level >= target.mip_levels()) {
     return fail(ErrorCode::invalid_argument, "read_rgba8: level " + std::to_string(level) +
@@ -132,7 +135,7 @@ Result<Image> detail::read_rgba8(const Context::Impl& ctx, const RenderTarget& t
   return out;
 }
 
-Result<FloatImage> detail::read_float(const Context::Impl& ctx, const RenderTarget& target,
+Result<FloatImage> detail::read_float(const ContextState& ctx, const RenderTarget& target,
                                       std::uint32_t level) {
   if (!target || level >= target.mip_levels()) {
     return fail(ErrorCode::invalid_argument, "read_float: level " + std::to_string(level) +
@@ -159,8 +162,8 @@ Result<Image> read_cube_face_rgba8(const Context& ctx, const CubeTarget& target,
   }
   const std::uint32_t s = level_extent(target.size(), level);
   const bool half = target.color_format() == ColorFormat::rgba16_float;
-  auto bytes = read_subresource(*ctx.impl(), target.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, s, s,
-                                level, face, half ? 8 : 4);
+  auto bytes = read_subresource(*context_state(ctx), target.color_image(),
+                                VK_IMAGE_ASPECT_COLOR_BIT, s, s, level, face, half ? 8 : 4);
   if (!bytes) {
     return bytes.error();
   }
@@ -181,8 +184,9 @@ Result<std::vector<float>> read_depth(const Context& ctx, const RenderTarget& ta
   if (!target || target.depth_image() == VK_NULL_HANDLE) {
     return fail(ErrorCode::invalid_argument, "read_depth: the target has no depth image");
   }
-  auto bytes = read_subresource(*ctx.impl(), target.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT,
-                                target.width(), target.height(), 0, 0, 4);
+  auto bytes =
+      read_subresource(*context_state(ctx), target.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT,
+                       target.width(), target.height(), 0, 0, 4);
   if (!bytes) {
     return bytes.error();
   }
@@ -207,7 +211,7 @@ Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& targ
     format = ColorFormat::rgba16_float;
     break;
   case VK_FORMAT_D32_SFLOAT: {
-    auto bytes = read_subresource(*ctx.impl(), target.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+    auto bytes = read_subresource(*context_state(ctx), target.image, VK_IMAGE_ASPECT_DEPTH_BIT,
                                   target.width, target.height, 0, 0, 4);
     if (!bytes) {
       return bytes.error();
@@ -224,8 +228,9 @@ Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& targ
                                             "' has a format Snell cannot read back (" +
                                             std::to_string(static_cast<int>(target.format)) + ")");
   }
-  auto bytes = read_subresource(*ctx.impl(), target.image, VK_IMAGE_ASPECT_COLOR_BIT, target.width,
-                                target.height, 0, 0, format == ColorFormat::rgba16_float ? 8 : 4);
+  auto bytes =
+      read_subresource(*context_state(ctx), target.image, VK_IMAGE_ASPECT_COLOR_BIT, target.width,
+                       target.height, 0, 0, format == ColorFormat::rgba16_float ? 8 : 4);
   if (!bytes) {
     return bytes.error();
   }

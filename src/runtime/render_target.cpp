@@ -35,7 +35,7 @@ VkFormat to_vk_format(ColorFormat format) {
 }
 
 Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTargetDesc& desc) {
-  const Context::Impl& ctx = *context.impl();
+  const ContextState& ctx = *context_state(context);
   const std::string name = desc.debug_name != nullptr ? desc.debug_name : "render target";
   if (auto r = detail::check_extent(ctx, name + " (RenderTargetDesc width x height)", desc.width,
                                     desc.height);
@@ -92,42 +92,13 @@ Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTa
   // Toolkit targets are samplable from creation on: a surface or the debug overlay may read a
   // target whose pass was skipped this frame (a camera behind a mirror), which must not be an
   // image in layout UNDEFINED. Cleared to transparent black and depth 1 (far).
-  if (auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) { t.clear_to_samplable(cmd); }); !r) {
+  if (auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+        detail::clear_to_shader_read(cmd, t.color_, t.mips_, 1, t.depth_);
+      });
+      !r) {
     return r.error();
   }
   return t;
-}
-
-void RenderTarget::clear_to_samplable(VkCommandBuffer cmd) const {
-  ImageBarrier to_dst[2] = {
-      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
-       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-       VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-      {depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
-       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-       VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-  };
-  const std::uint32_t count = depth_ != VK_NULL_HANDLE ? 2 : 1;
-  detail::barrier(cmd, to_dst, count);
-  const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 0.0f}};
-  const VkImageSubresourceRange colors{VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1};
-  vkCmdClearColorImage(cmd, color_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &colors);
-  if (depth_ != VK_NULL_HANDLE) {
-    const VkClearDepthStencilValue far{1.0f, 0};
-    const VkImageSubresourceRange depths{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-    vkCmdClearDepthStencilImage(cmd, depth_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1,
-                                &depths);
-  }
-  ImageBarrier to_read[2] = {to_dst[0], to_dst[1]};
-  for (ImageBarrier& b : to_read) {
-    b.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    b.new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    b.src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
-    b.src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    b.dst_stage = detail::kReadStages;
-    b.dst_access = detail::kReadAccess;
-  }
-  detail::barrier(cmd, to_read, count);
 }
 
 RenderTarget::RenderTarget(RenderTarget&& other) noexcept {

@@ -67,7 +67,7 @@ struct Pipelines {
 } // namespace
 
 struct SceneRenderer::Impl {
-  const Context::Impl* ctx = nullptr;
+  const ContextState* ctx = nullptr;
   Scene scene;
   std::vector<GpuMesh> meshes;
   std::vector<Texture2D> textures;
@@ -173,7 +173,10 @@ Result<void> SceneRenderer::Impl::init(const Context& context) {
   // Anisotropic filtering is nearly free on GPUs but costs lavapipe ~3x the frame time
   // (measured: pool 1280x720, 150 ms at 8x vs 45 ms at 1x), so CPU devices go without.
   const float anisotropy = ctx->info.type == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1.0f : 8.0f;
-  auto s = Sampler::create(context, SamplerDesc{true, true, AddressMode::repeat, anisotropy});
+  auto s = Sampler::create(context, SamplerDesc{.linear = true,
+                                                .mipmaps = true,
+                                                .address = AddressMode::repeat,
+                                                .max_anisotropy = anisotropy});
   if (!w || !n || !s) {
     return !w ? w.error() : !n ? n.error() : s.error();
   }
@@ -330,7 +333,7 @@ SceneRenderer::~SceneRenderer() = default;
 
 Result<SceneRenderer> SceneRenderer::create(const Context& ctx, const Scene& scene) {
   auto impl = std::make_unique<Impl>();
-  impl->ctx = ctx.impl();
+  impl->ctx = context_state(ctx);
   impl->scene = scene;
   for (const Object& o : scene.objects) {
     if (o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= scene.meshes.size()) {

@@ -4,6 +4,7 @@
 
 #include "barriers.hpp"
 #include "image_alloc.hpp"
+#include "runtime_internal.hpp"
 #include "vk_util.hpp"
 
 #include <stb_image.h>
@@ -19,7 +20,7 @@ using detail::vk_init;
 using detail::ImageBarrier;
 
 Result<Texture2D> Texture2D::create(const Context& context, const Image& image, bool mips) {
-  const Context::Impl& ctx = *context.impl();
+  const ContextState& ctx = *context_state(context);
   const std::string name = "texture '" + image.name + "'";
   if (auto r = detail::check_extent(ctx, name, image.width, image.height); !r) {
     return r.error();
@@ -56,8 +57,10 @@ Result<Texture2D> Texture2D::create(const Context& context, const Image& image, 
     return view.error();
   }
   t.view_ = *view;
-  auto staging = detail::create_buffer(
-      ctx, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "staging"});
+  auto staging = create_buffer(ctx, BufferDesc{.size = bytes,
+                                               .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                               .memory = MemoryUsage::upload,
+                                               .debug_name = "staging"});
   if (!staging) {
     return staging.error();
   }
@@ -157,7 +160,7 @@ void Texture2D::reset() {
 }
 
 Result<Sampler> Sampler::create(const Context& context, const SamplerDesc& desc) {
-  const Context::Impl& ctx = *context.impl();
+  const ContextState& ctx = *context_state(context);
   if (!(desc.max_anisotropy >= 1.0f)) {
     return fail(ErrorCode::invalid_argument, "SamplerDesc::max_anisotropy must be >= 1, got " +
                                                  std::to_string(desc.max_anisotropy));

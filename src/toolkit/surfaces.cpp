@@ -27,10 +27,12 @@ Result<Surface> upload(const Context& ctx, const Mesh& mesh, const glm::mat4& wo
   Surface s;
   const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(Vertex);
   const VkDeviceSize ibytes = mesh.indices.size() * sizeof(std::uint32_t);
-  auto vb = Buffer::create(ctx, BufferDesc{vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                           MemoryUsage::gpu_only, "surface vertices"});
-  auto ib = Buffer::create(ctx, BufferDesc{ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                           MemoryUsage::gpu_only, "surface indices"});
+  auto vb = Buffer::create(ctx, BufferDesc{.size = vbytes,
+                                           .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                           .debug_name = "surface vertices"});
+  auto ib = Buffer::create(ctx, BufferDesc{.size = ibytes,
+                                           .usage = VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                           .debug_name = "surface indices"});
   if (!vb || !ib) {
     return !vb ? vb.error() : ib.error();
   }

@@ -31,8 +31,10 @@ Result<UniformRing> UniformRing::create(const Context& ctx, const UniformRingDes
   ring.frames_in_flight_ = desc.frames_in_flight;
   ring.label_ = label;
   auto buffer = Buffer::create(
-      ctx, BufferDesc{ring.stride_ * desc.blocks_per_frame * desc.frames_in_flight,
-                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUsage::upload, desc.label});
+      ctx, BufferDesc{.size = ring.stride_ * desc.blocks_per_frame * desc.frames_in_flight,
+                      .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                      .memory = MemoryUsage::upload,
+                      .debug_name = desc.label});
   if (!buffer) {
     return buffer.error();
   }

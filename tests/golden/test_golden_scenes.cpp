@@ -30,7 +30,8 @@ struct Rendered {
 /// Renders a built-in scene, with the water effect (registry-created, `preset` applied) when
 /// `water_preset` is not empty.
 Rendered render_builtin(const std::string& name, const std::string& water_preset = "") {
-  auto ctx = Context::create(ContextDesc{true, "lavapipe", "snell-golden"});
+  auto ctx = Context::create(
+      ContextDesc{.validation = true, .device = "lavapipe", .app_name = "snell-golden"});
   REQUIRE_MESSAGE(ctx.has_value(), ctx.error().message);
   auto scene = make_builtin_scene(name);
   REQUIRE(scene.has_value());

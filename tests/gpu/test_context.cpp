@@ -106,12 +106,22 @@ TEST_CASE("context: adopting a host-created device") {
   {
     // With the host's feature chain: a chain lacking multiview is refused, naming it.
     f11.multiview = VK_FALSE;
-    auto refused = Context::adopt(AdoptInfo{instance, pd, device, queue, 0, &f2});
+    auto refused = Context::adopt(AdoptInfo{.instance = instance,
+                                            .physical_device = pd,
+                                            .device = device,
+                                            .queue = queue,
+                                            .queue_family = 0,
+                                            .enabled_features = &f2});
     REQUIRE_FALSE(refused.has_value());
     CHECK(refused.error().code == ErrorCode::missing_feature);
     CHECK(refused.error().message.find("multiview") != std::string::npos);
     f11.multiview = VK_TRUE;
-    auto ctx = Context::adopt(AdoptInfo{instance, pd, device, queue, 0, &f2});
+    auto ctx = Context::adopt(AdoptInfo{.instance = instance,
+                                        .physical_device = pd,
+                                        .device = device,
+                                        .queue = queue,
+                                        .queue_family = 0,
+                                        .enabled_features = &f2});
     REQUIRE_MESSAGE(ctx.has_value(), ctx.error().message);
     CHECK_FALSE(ctx->owns_device());
     auto target = RenderTarget::create(*ctx, RenderTargetDesc{.width = 8,

@@ -254,7 +254,7 @@ TEST_CASE("conformance: every registered effect's parameters") {
     const ParamSchema* schema = registry.schema(name);
     REQUIRE(schema != nullptr);
     CHECK(schema->effect == name);
-    auto effect = registry.create(name, EffectCreateInfo{&gpu.ctx()});
+    auto effect = registry.create(name, EffectCreateInfo{.context = &gpu.ctx()});
     REQUIRE_MESSAGE(effect.has_value(), effect.error().message);
     Effect& e = **effect;
     CHECK(e.type() == name);

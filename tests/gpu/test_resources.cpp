@@ -17,7 +17,8 @@ TEST_CASE("resources: zero-sized and oversized targets are refused with the fiel
   CHECK(huge.error().message.find("100000") != std::string::npos);
   auto cube = CubeTarget::create(gpu.ctx(), CubeTargetDesc{.size = 0});
   REQUIRE_FALSE(cube.has_value());
-  auto buffer = Buffer::create(gpu.ctx(), BufferDesc{0, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT});
+  auto buffer =
+      Buffer::create(gpu.ctx(), BufferDesc{.size = 0, .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT});
   REQUIRE_FALSE(buffer.has_value());
   CHECK(buffer.error().message.find("size") != std::string::npos);
   Image bad;
@@ -40,12 +41,14 @@ TEST_CASE("resources: buffers upload through staging and round-trip") {
   for (std::uint32_t i = 0; i < data.size(); ++i) {
     data[i] = i * 2654435761u;
   }
-  auto gpu_buffer = Buffer::create(gpu.ctx(), BufferDesc{4000, VK_BUFFER_USAGE_TRANSFER_SRC_BIT});
+  auto gpu_buffer = Buffer::create(
+      gpu.ctx(), BufferDesc{.size = 4000, .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT});
   REQUIRE(gpu_buffer.has_value());
   REQUIRE(gpu_buffer->upload(data.data(), 4000));
   CHECK_FALSE(gpu_buffer->upload(data.data(), 8, 3996)); // past the end
-  auto readback = Buffer::create(
-      gpu.ctx(), BufferDesc{4000, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback});
+  auto readback = Buffer::create(gpu.ctx(), BufferDesc{.size = 4000,
+                                                       .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                       .memory = MemoryUsage::readback});
   REQUIRE(readback.has_value());
   REQUIRE(gpu.ctx().submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{0, 0, 4000};
@@ -115,7 +118,7 @@ TEST_CASE("resources: texture upload with GPU mips, cube target views, samplers"
   CHECK(cube->array_view() != VK_NULL_HANDLE);
   auto sampler = Sampler::create(gpu.ctx(), SamplerDesc{});
   REQUIRE(sampler.has_value());
-  auto bad = Sampler::create(gpu.ctx(), SamplerDesc{true, true, AddressMode::repeat, 0.5f});
+  auto bad = Sampler::create(gpu.ctx(), SamplerDesc{.max_anisotropy = 0.5f});
   REQUIRE_FALSE(bad.has_value());
   CHECK(bad.error().message.find("max_anisotropy") != std::string::npos);
 }

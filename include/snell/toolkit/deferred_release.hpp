@@ -55,7 +55,7 @@ public:
 private:
   struct Item {
     std::uint64_t frame = 0;
-    std::shared_ptr<void> resource; ///< Type-erased owner: its deleter destroys the resource.
+    std::shared_ptr<void> resource{}; ///< Type-erased owner: its deleter destroys the resource.
   };
   std::uint32_t frames_in_flight_ = 2;
   std::vector<Item> items_;

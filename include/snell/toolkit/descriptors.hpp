@@ -28,7 +28,7 @@ struct DescriptorBinding {
 
 /// Parameters of DescriptorSets::create.
 struct DescriptorSetDesc {
-  std::vector<DescriptorBinding> bindings; ///< The layout. Required: at least one binding.
+  std::vector<DescriptorBinding> bindings{}; ///< The layout. Required: at least one binding.
   /// Sets kept (one per frame in flight, EffectCreateInfo::frames_in_flight). 1..16. Default 2.
   std::uint32_t frames_in_flight = 2;
   const char* label = "descriptor set"; ///< Names the set in errors. Default "descriptor set".

@@ -36,7 +36,7 @@ void aim_at(SceneView& view, const RenderTarget& target);
 /// One scene pass into a 2D target.
 struct ScenePass {
   const char* name = "pass"; ///< GPU timer name ("water.reflection"). Default "pass".
-  SceneView view;            ///< What to draw (aim_at the target first).
+  SceneView view{};          ///< What to draw (aim_at the target first).
   /// The only pixels rendered (clear included); extent {0, 0} = the whole target. Default
   /// whole.
   VkRect2D scissor{{0, 0}, {0, 0}};

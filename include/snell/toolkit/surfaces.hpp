@@ -26,11 +26,11 @@ enum class Shape : std::uint8_t {
 
 /// One uploaded mesh and where it is.
 struct Surface {
-  Buffer vertices;               ///< snell::Vertex, binding 0 (RasterState::vertex_input).
-  Buffer indices;                ///< uint32 triangle list.
+  Buffer vertices{};             ///< snell::Vertex, binding 0 (RasterState::vertex_input).
+  Buffer indices{};              ///< uint32 triangle list.
   std::uint32_t index_count = 0; ///< Indices to draw.
   glm::mat4 world{1.0f};         ///< Object to world (at time 0 for scene objects).
-  Material material;             ///< Its material (the default one when it has none).
+  Material material{};           ///< Its material (the default one when it has none).
   int object = -1;               ///< Index into Scene::objects, or -1 (arrays, shapes).
   glm::vec3 bounds_min{0.0f};    ///< Object-space bounds of the vertices.
   glm::vec3 bounds_max{0.0f};

@@ -111,7 +111,7 @@ struct WaterParams {
   /// Ripple normal map: a PNG/JPEG file (tangent-space, linear, green toward the image top,
   /// tileable), or "" for the built-in procedural one (256x256, seeded). Loaded when set; a
   /// missing or undecodable file is an error naming it. Default "".
-  std::string normal_map;
+  std::string normal_map{};
 };
 
 /// The `seed` preset: seeds 000/001 for side-by-side comparison: full-resolution targets,

@@ -14,13 +14,14 @@ TEST_CASE("probe_mirror: registered with the built-in effects, the marker's mirr
   REQUIRE(register_builtin_effects(registry).has_value());
   Scene scene = test::empty_dark_scene();
   const glm::vec3 marker(0.5f, 1.0f, -0.5f);
-  test::add_object(scene,
-                   test::make_box_mesh(glm::vec3(0.15f), test::add_emissive_material(scene, {1, 0, 0})),
-                   marker, layer::reflected); // only in the reflection
+  test::add_object(
+      scene, test::make_box_mesh(glm::vec3(0.15f), test::add_emissive_material(scene, {1, 0, 0})),
+      marker, layer::reflected); // only in the reflection
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE(renderer.has_value());
   const std::uint32_t w = 160, h = 120;
-  auto frame = FrameRenderer::create(gpu.ctx(), FrameDesc{.width = w, .height = h, .color = ColorFormat::rgba8_unorm});
+  auto frame = FrameRenderer::create(
+      gpu.ctx(), FrameDesc{.width = w, .height = h, .color = ColorFormat::rgba8_unorm});
   REQUIRE(frame.has_value());
   EffectCreateInfo info;
   info.context = &gpu.ctx();
