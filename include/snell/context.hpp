@@ -108,6 +108,8 @@ public:
   [[nodiscard]] std::vector<std::string> validation_messages() const;
 
   /// Records commands with `record` into a one-time command buffer, submits it and waits.
+  /// Thread-safe (one submit at a time). Errors: a call from inside `record` on the same thread
+  /// (invalid_argument: it would wait forever), Vulkan failures (vulkan_error with the VkResult).
   [[nodiscard]] Result<void>
   submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
 

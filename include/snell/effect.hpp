@@ -178,6 +178,10 @@ public:
   /// the host then builds the mip chain this frame (SnapshotSource::mips). Default false: only
   /// level 0 and depth are copied, the cheapest snapshot.
   [[nodiscard]] virtual bool wants_snapshot_mips() const { return false; }
+  /// The pixels of the main view that record_draw samples from the snapshot this frame (valid
+  /// after update()), margins for distortion included: the host copies only the union of the
+  /// effects' regions (SnapshotSource::region). Extent 0 x 0 (default): the whole image.
+  [[nodiscard]] virtual VkRect2D snapshot_region() const { return {}; }
   /// Objects of EffectCreateInfo::scene (indices into Scene::objects) that this effect draws
   /// itself with its own shading: the host's scene renderer leaves them out. Default none.
   [[nodiscard]] virtual Span<const int> drawn_objects() const { return {}; }

@@ -61,10 +61,14 @@ public:
   void swap(RenderTarget& other) noexcept;
   ~RenderTarget();
 
-  /// Barriers + vkCmdBeginRendering over the whole target (level 0), clearing colour to
-  /// `clear` (linear RGBA) and depth to `clear_depth` (default 1: far for depth [0,1]).
-  /// Also sets a full viewport (standard, positive height) and scissor.
-  void begin_rendering(VkCommandBuffer cmd, const float clear[4], float clear_depth = 1.0f) const;
+  /// Barriers + vkCmdBeginRendering on level 0, clearing colour to `clear` (linear RGBA) and
+  /// depth to `clear_depth` (default 1: far for depth [0,1]). `area` (pixels, clamped to the
+  /// target) is the render area: only it is cleared, drawn and stored, and the rest of the
+  /// target keeps its previous contents (the pass is cheaper by what it does not clear).
+  /// Default {} (0 x 0): the whole target, previous contents discarded. Also sets a viewport
+  /// over the whole target (standard, positive height) and the scissor to the area.
+  void begin_rendering(VkCommandBuffer cmd, const float clear[4], float clear_depth = 1.0f,
+                       VkRect2D area = {}) const;
   /// vkCmdEndRendering, then colour (all levels) and depth to SHADER_READ_ONLY_OPTIMAL; with
   /// mips, generates the chain first by linear blits.
   void end_rendering(VkCommandBuffer cmd) const;
@@ -95,6 +99,8 @@ public:
   [[nodiscard]] explicit operator bool() const { return color_ != VK_NULL_HANDLE; }
 
 private:
+  friend Result<RenderTarget> create_render_target(const Context& ctx, const RenderTargetDesc& desc,
+                                                   VkCommandBuffer clear_into);
   void reset();
   /// Ends the rendering and finishes colour (mips, SHADER_READ_ONLY_OPTIMAL).
   void finish_color(VkCommandBuffer cmd) const;

@@ -2,6 +2,7 @@
 // macros (conventions are function arguments). See docs/math.md and docs/conventions.md.
 #pragma once
 
+#include "math/bounds.hpp"
 #include "math/clipping.hpp"
 #include "math/conventions.hpp"
 #include "math/cube.hpp"

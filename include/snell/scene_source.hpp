@@ -36,6 +36,11 @@ struct SceneView {
   std::uint32_t view_mask = 0;
   std::array<glm::mat4, 6> multiview_view_proj{}; ///< Per-view matrices when view_mask != 0.
   float time = 0.0f;                              ///< Scene time in seconds (animation).
+  /// The pixels of the target the pass keeps (its scissor), for culling: a SceneSource may skip
+  /// geometry that projects entirely outside it (Snell's SceneRenderer does). It does not set
+  /// the scissor: the caller has (record_scene_pass sets both). Extent 0 x 0: the whole target.
+  /// Ignored for multiview. Default {} (whole target).
+  VkRect2D scissor{};
 };
 
 /// True when drawing with `view` and `proj` flips triangle winding in the framebuffer compared

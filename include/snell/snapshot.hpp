@@ -32,7 +32,15 @@ struct SnapshotSource {
   /// Build the colour copy's mip chain this frame (an effect samples blurred levels). Without
   /// it only level 0 (and depth) are this frame's. Default true.
   bool mips = true;
+  /// The pixels to copy (clamped to `extent`): the union of what the effects sample
+  /// (Effect::snapshot_region). Outside it the copy keeps older contents; mips are built from
+  /// the whole of level 0. Extent 0 x 0: everything. Default {} (everything).
+  VkRect2D region{};
 };
+
+/// The union of two pixel rectangles, where an extent of 0 x 0 means "everything" (so the union
+/// with it is everything too).
+[[nodiscard]] VkRect2D union_region(VkRect2D a, VkRect2D b);
 
 /// Parameters of SceneSnapshot::create.
 struct SnapshotDesc {
@@ -84,9 +92,6 @@ public:
   ~SceneSnapshot() = default;
 
 private:
-  static void copy_image(VkCommandBuffer cmd, VkImage from, VkImage to, VkImageAspectFlags aspect,
-                         VkExtent2D extent);
-  void blit_color(VkCommandBuffer cmd, const SnapshotSource& src) const;
   /// Returns the sources to their layouts and the copies to SHADER_READ_ONLY (mips if asked).
   void finish(VkCommandBuffer cmd, const SnapshotSource& src) const;
   const Context* ctx_ = nullptr;

@@ -110,6 +110,7 @@ public:
   bool wants_snapshot() const override {
     return params_.refraction_source == WaterRefractionSource::snapshot;
   }
+  VkRect2D snapshot_region() const override { return snapshot_region_; }
 
   Result<void> update(const FrameInfo& info) override {
     frame_ = info.frame_index;
@@ -140,6 +141,8 @@ public:
       debug_has_snapshot_ = use_snapshot_;
     }
     compute_views(info.main_view);
+    // The surface samples the snapshot where the water projects, plus the ripple margin.
+    snapshot_region_ = sampled_rect(info.main_view, info.main_view.extent);
     return {};
   }
 
@@ -150,7 +153,7 @@ public:
     ScenePass pass;
     pass.name = "water.reflection";
     pass.view = reflection_view_;
-    pass.scissor = sampled_rect(info.main_view);
+    pass.scissor = sampled_rect(info.main_view, reflection_.extent());
     if (auto r = record_scene_pass(cmd, scene, reflection_.target(), pass, info.timer); !r) {
       return r;
     }
@@ -279,8 +282,9 @@ private:
   /// widened by the largest lookup offset (|slope| <= 2 sqrt(2) wave_height, times distortion)
   /// and two texels for the bilinear and gather footprints. The whole target when a corner is
   /// behind the eye (the projection of the rectangle is then unbounded).
-  [[nodiscard]] VkRect2D sampled_rect(const SceneView& main) const {
-    const VkExtent2D extent = reflection_.extent();
+  /// The rectangle of a target of `extent` covering the main view's screen (uv) area that the
+  /// surface samples: the water's projected bounds plus the largest ripple offset.
+  [[nodiscard]] VkRect2D sampled_rect(const SceneView& main, VkExtent2D extent) const {
     const VkRect2D full{{0, 0}, extent};
     const WaterParams& p = params_;
     const glm::mat4 vp = main.proj * main.view;
@@ -313,6 +317,7 @@ private:
 
   const Context* ctx_ = nullptr;
   std::uint32_t frames_in_flight_ = 2;
+  VkRect2D snapshot_region_{}; ///< Main-view pixels the surface samples (this frame).
   DeferredRelease release_;
   WaterParams params_;
   std::string preset_ = "default";

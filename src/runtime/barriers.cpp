@@ -62,9 +62,31 @@ void clear_to_shader_read(VkCommandBuffer cmd, VkImage color, std::uint32_t mips
   barrier(cmd, to_read, count);
 }
 
+VkRect2D clamp_area(VkRect2D area, VkExtent2D extent) {
+  if (area.extent.width == 0 || area.extent.height == 0) {
+    return {{0, 0}, extent};
+  }
+  const auto clamp = [](std::int32_t v, std::uint32_t hi) {
+    return static_cast<std::uint32_t>(std::clamp<std::int64_t>(v, 0, hi));
+  };
+  const std::uint32_t x0 = clamp(area.offset.x, extent.width);
+  const std::uint32_t y0 = clamp(area.offset.y, extent.height);
+  const std::uint32_t x1 = static_cast<std::uint32_t>(
+      std::clamp<std::int64_t>(std::int64_t{area.offset.x} + area.extent.width, x0, extent.width));
+  const std::uint32_t y1 = static_cast<std::uint32_t>(std::clamp<std::int64_t>(
+      std::int64_t{area.offset.y} + area.extent.height, y0, extent.height));
+  if (x1 == x0 || y1 == y0) {
+    // Nothing of the area is inside: keep a 1x1 area (an empty one is invalid).
+    return {{static_cast<std::int32_t>(std::min(x0, extent.width - 1)),
+             static_cast<std::int32_t>(std::min(y0, extent.height - 1))},
+            {1, 1}};
+  }
+  return {{static_cast<std::int32_t>(x0), static_cast<std::int32_t>(y0)}, {x1 - x0, y1 - y0}};
+}
+
 void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView depth_view,
                      VkExtent2D extent, std::uint32_t view_mask, const float* clear,
-                     float clear_depth, bool store_depth, bool load_depth) {
+                     float clear_depth, bool store_depth, bool load_depth, VkRect2D area) {
   auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   color.imageView = color_view;
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -80,7 +102,9 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView de
   depth.storeOp = store_depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.clearValue.depthStencil = {clear_depth, 0};
   auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-  ri.renderArea = {{0, 0}, extent};
+  // Loads, clears and stores touch only the render area: a pass that keeps a sub-rectangle
+  // (its scissor) leaves the rest of the image as it was and does not pay to clear it.
+  ri.renderArea = clamp_area(area, extent);
   ri.layerCount = 1;
   ri.viewMask = view_mask;
   ri.colorAttachmentCount = 1;
@@ -90,8 +114,7 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView de
   const VkViewport viewport{
       0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
-  const VkRect2D scissor{{0, 0}, extent};
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdSetScissor(cmd, 0, 1, &ri.renderArea);
 }
 
 void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std::uint32_t height,

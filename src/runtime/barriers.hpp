@@ -33,13 +33,17 @@ inline constexpr VkPipelineStageFlags2 kReadStages =
 inline constexpr VkAccessFlags2 kReadAccess =
     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT;
 
-/// vkCmdBeginRendering on one colour view (+ optional depth view) over the whole `extent`,
-/// plus a standard full viewport and scissor. `clear` = nullptr loads the colour instead of
-/// clearing it; depth is cleared to `clear_depth` (loaded when `load_depth`) and stored when
-/// `store_depth`.
+/// `area` clamped to `extent`; an empty `area` (0 x 0) is the whole extent. Never empty: an area
+/// entirely outside gives a 1 x 1 area at the nearest corner.
+VkRect2D clamp_area(VkRect2D area, VkExtent2D extent);
+
+/// vkCmdBeginRendering on one colour view (+ optional depth view) over `area` of `extent`
+/// (clamp_area: default the whole extent), with a standard viewport over the whole extent and
+/// the scissor set to the area. `clear` = nullptr loads the colour instead of clearing it;
+/// depth is cleared to `clear_depth` (loaded when `load_depth`) and stored when `store_depth`.
 void begin_rendering(VkCommandBuffer cmd, VkImageView color, VkImageView depth, VkExtent2D extent,
                      std::uint32_t view_mask, const float* clear, float clear_depth,
-                     bool store_depth, bool load_depth = false);
+                     bool store_depth, bool load_depth = false, VkRect2D area = {});
 
 /// Puts a fresh image (layout UNDEFINED) into the state of a target that is samplable before its
 /// first pass: colour (`mips` levels x `layers` layers) cleared to transparent black and, when

@@ -539,7 +539,17 @@ Result<std::uint32_t> Context::find_memory_type(std::uint32_t type_bits,
 Result<void>
 ContextState::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
   const ContextState* impl_ = this;
+  if (submit_owner.load() == std::this_thread::get_id()) {
+    return fail(ErrorCode::invalid_argument,
+                "Context::submit_and_wait called from inside its own callback (a nested submit "
+                "would wait forever): record into the command buffer the callback was given");
+  }
   std::lock_guard<std::mutex> lock(impl_->submit_mutex);
+  submit_owner.store(std::this_thread::get_id());
+  struct ClearOwner {
+    std::atomic<std::thread::id>& owner;
+    ~ClearOwner() { owner.store(std::thread::id{}); }
+  } clear_owner{submit_owner};
   VkCommandBufferAllocateInfo ai =
       vk_init<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   ai.commandPool = impl_->pool;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace snell {
@@ -36,6 +37,9 @@ struct ContextState {
   VkCommandPool pool = VK_NULL_HANDLE;
   VkFence fence = VK_NULL_HANDLE;
   mutable std::mutex submit_mutex;
+  /// The thread inside submit_and_wait (a nested call from its callback is refused, not a
+  /// deadlock).
+  mutable std::atomic<std::thread::id> submit_owner{};
 
   ~ContextState();
 

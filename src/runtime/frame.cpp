@@ -194,6 +194,14 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
     src.view_proj = view.proj * view.view;
     src.mips = std::any_of(active.begin(), active.end(),
                            [](const Effect* e) { return e->wants_snapshot_mips(); });
+    // Only what the effects sample is copied ("scissor to what is sampled").
+    bool first = true;
+    for (const Effect* e : active) {
+      if (e->wants_snapshot()) {
+        src.region = first ? e->snapshot_region() : union_region(src.region, e->snapshot_region());
+        first = false;
+      }
+    }
     auto r = s.snapshot.record(cmd, src, s.frame_index);
     s.timer.end(cmd);
     if (r) {

@@ -3,6 +3,7 @@
 
 #include "barriers.hpp"
 #include "image_alloc.hpp"
+#include "runtime_internal.hpp"
 #include "vk_util.hpp"
 
 #include <algorithm>
@@ -35,6 +36,11 @@ VkFormat to_vk_format(ColorFormat format) {
 }
 
 Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTargetDesc& desc) {
+  return create_render_target(context, desc, VK_NULL_HANDLE);
+}
+
+Result<RenderTarget> create_render_target(const Context& context, const RenderTargetDesc& desc,
+                                          VkCommandBuffer clear_into) {
   const ContextState& ctx = *context_state(context);
   const std::string name = desc.debug_name != nullptr ? desc.debug_name : "render target";
   if (auto r = detail::check_extent(ctx, name + " (RenderTargetDesc width x height)", desc.width,
@@ -92,6 +98,10 @@ Result<RenderTarget> RenderTarget::create(const Context& context, const RenderTa
   // Toolkit targets are samplable from creation on: a surface or the debug overlay may read a
   // target whose pass was skipped this frame (a camera behind a mirror), which must not be an
   // image in layout UNDEFINED. Cleared to transparent black and depth 1 (far).
+  if (clear_into != VK_NULL_HANDLE) {
+    detail::clear_to_shader_read(clear_into, t.color_, t.mips_, 1, t.depth_);
+    return t;
+  }
   if (auto r = ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         detail::clear_to_shader_read(cmd, t.color_, t.mips_, 1, t.depth_);
       });
@@ -137,16 +147,21 @@ void RenderTarget::reset() {
   ctx_ = nullptr;
 }
 
-void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
-                                   float clear_depth) const {
-  // Contents are cleared, so the old layout is UNDEFINED; the barrier still orders this frame's
-  // writes after earlier reads of the previous contents (write-after-read).
+void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4], float clear_depth,
+                                   VkRect2D area) const {
+  // The whole target is cleared, so its old layout is UNDEFINED (contents discarded). With an
+  // area, what lies outside keeps its contents: the old layout is the samplable one every
+  // target is in between passes. Either way the barrier orders this pass's writes after earlier
+  // reads of the previous contents (write-after-read).
+  const bool whole = area.extent.width == 0 || area.extent.height == 0;
+  const VkImageLayout old_layout =
+      whole ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   ImageBarrier barriers[2] = {
-      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 1, old_layout,
        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT},
-      {depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+      {depth_, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, old_layout,
        VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
@@ -155,7 +170,7 @@ void RenderTarget::begin_rendering(VkCommandBuffer cmd, const float clear[4],
   detail::barrier(cmd, barriers, depth_ != VK_NULL_HANDLE ? 2 : 1);
 
   detail::begin_rendering(cmd, color_level0_view_, depth_view_, {width_, height_}, 0, clear,
-                          clear_depth, true);
+                          clear_depth, true, false, area);
 }
 
 void RenderTarget::continue_rendering(VkCommandBuffer cmd) const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <snell/buffer.hpp>
+#include <snell/images.hpp>
 #include <snell/readback.hpp>
 
 #include "context_impl.hpp"
@@ -11,6 +12,12 @@ namespace snell {
 
 /// Buffer::create on the context's state (staging buffers of other resources).
 Result<Buffer> create_buffer(const ContextState& ctx, const BufferDesc& desc);
+
+/// RenderTarget::create whose initial clear (to the samplable state) is recorded into
+/// `clear_into` when it is not null, instead of a blocking submit: for targets made while a
+/// command buffer is being recorded (a snapshot that follows the host's extent).
+Result<RenderTarget> create_render_target(const Context& ctx, const RenderTargetDesc& desc,
+                                          VkCommandBuffer clear_into);
 
 namespace detail {
 /// read_rgba8 / read_float on the context's state.

@@ -1,6 +1,7 @@
 // The default host's forward renderer: uploads a Scene and draws it for any SceneView.
 #include <snell/buffer.hpp>
 #include <snell/images.hpp>
+#include <snell/math/bounds.hpp>
 #include <snell/pipeline.hpp>
 #include <snell/scene_renderer.hpp>
 
@@ -56,6 +57,43 @@ struct GpuMesh {
   Buffer vertices;
   Buffer indices;
   std::uint32_t index_count = 0;
+  Aabb bounds; ///< Object-space bounds of the vertices (culling).
+};
+
+/// Conservative visibility of objects for one SceneView (see SceneRenderer's culling note).
+class ViewCulling {
+public:
+  explicit ViewCulling(const SceneView& view)
+      : clip_plane_(view.clip_plane), single_(view.view_mask == 0),
+        view_proj_(view.proj * view.view) {
+    const VkRect2D& r = view.scissor;
+    if (r.extent.width != 0 && r.extent.height != 0 && view.extent.width != 0 &&
+        view.extent.height != 0) {
+      // Pixels to NDC through Vulkan's standard viewport (x right, y down from the top row).
+      const float w = static_cast<float>(view.extent.width);
+      const float h = static_cast<float>(view.extent.height);
+      const float x0 = static_cast<float>(r.offset.x);
+      const float y0 = static_cast<float>(r.offset.y);
+      rect_ = glm::vec4(2.0f * x0 / w - 1.0f, 2.0f * y0 / h - 1.0f,
+                        2.0f * (x0 + static_cast<float>(r.extent.width)) / w - 1.0f,
+                        2.0f * (y0 + static_cast<float>(r.extent.height)) / h - 1.0f);
+    }
+  }
+
+  /// True when the object (mesh bounds `bounds` placed by `model`) cannot show in the view.
+  [[nodiscard]] bool invisible(const Aabb& bounds, const glm::mat4& model) const {
+    if (clip_plane_ && aabb_below_plane(transform_aabb(bounds, model), *clip_plane_)) {
+      return true;
+    }
+    // A multiview pass (a cube capture) sees every direction: no frustum test.
+    return single_ && aabb_outside_clip(bounds, view_proj_ * model, rect_, DepthRange::zero_to_one);
+  }
+
+private:
+  std::optional<Plane> clip_plane_;
+  bool single_;
+  glm::mat4 view_proj_;
+  glm::vec4 rect_{-1.0f, -1.0f, 1.0f, 1.0f};
 };
 
 struct Pipelines {
@@ -86,6 +124,7 @@ struct SceneRenderer::Impl {
   VkShaderModule sky_vert = VK_NULL_HANDLE, sky_frag = VK_NULL_HANDLE;
   std::map<std::tuple<VkFormat, VkFormat, std::uint32_t>, Pipelines> pipelines;
   std::vector<bool> hidden; ///< Per object: drawn by an effect, left out here.
+  SceneDrawStats stats;     ///< Of the last draw_scene.
 
   ~Impl() {
     if (ctx == nullptr) {
@@ -158,6 +197,9 @@ Result<void> SceneRenderer::Impl::init(const Context& context) {
     gm.vertices = std::move(*vb);
     gm.indices = std::move(*ib);
     gm.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+    for (const Vertex& v : mesh.vertices) {
+      gm.bounds = expand(gm.bounds, v.position);
+    }
     meshes.push_back(std::move(gm));
   }
   // Textures.
@@ -348,6 +390,10 @@ Result<SceneRenderer> SceneRenderer::create(const Context& ctx, const Scene& sce
   return SceneRenderer(std::move(impl));
 }
 
+SceneDrawStats SceneRenderer::last_draw_stats() const {
+  return impl_->stats;
+}
+
 const Scene& SceneRenderer::scene() const {
   return impl_->scene;
 }
@@ -403,14 +449,12 @@ Result<void> SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& vie
   struct Blended {
     float distance;
     std::size_t object;
+    glm::mat4 model;
   };
   std::vector<Blended> blended;
-  auto draw_object = [&](std::size_t index) {
+  auto draw_object = [&](std::size_t index, const glm::mat4& model) {
     const Object& o = s.scene.objects[index];
     const GpuMesh& gm = s.meshes[static_cast<std::size_t>(o.mesh)];
-    if (gm.index_count == 0) {
-      return;
-    }
     const Mesh& mesh = s.scene.meshes[static_cast<std::size_t>(o.mesh)];
     const std::size_t mat_index =
         mesh.material >= 0 && static_cast<std::size_t>(mesh.material) < s.scene.materials.size()
@@ -420,7 +464,7 @@ Result<void> SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& vie
     const Material& mat =
         mat_index < s.scene.materials.size() ? s.scene.materials[mat_index] : fallback;
     DrawBlock push{};
-    push.model = o.world_at(view.time);
+    push.model = model;
     push.base_color = mat.base_color;
     push.emissive = glm::vec4(mat.emissive, mat.base_color_texture >= 0 ? 1.0f : 0.0f);
     push.params = glm::vec4(mat.roughness, mat.specular, mat.normal_scale,
@@ -441,21 +485,32 @@ Result<void> SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& vie
     vkCmdBindIndexBuffer(cmd, gm.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, gm.index_count, 1, 0, 0, 0);
   };
+  const ViewCulling culling(view);
+  s.stats = {};
   for (std::size_t i = 0; i < s.scene.objects.size(); ++i) {
     const Object& o = s.scene.objects[i];
     if ((o.layers & view.layer_mask) == 0 || (i < s.hidden.size() && s.hidden[i])) {
       continue;
     }
+    const GpuMesh& gm = s.meshes[static_cast<std::size_t>(o.mesh)];
+    if (gm.index_count == 0) {
+      continue;
+    }
+    const glm::mat4 model = o.world_at(view.time);
+    if (culling.invisible(gm.bounds, model)) {
+      ++s.stats.culled;
+      continue;
+    }
+    ++s.stats.drawn;
     const Mesh& mesh = s.scene.meshes[static_cast<std::size_t>(o.mesh)];
     const bool blend =
         mesh.material >= 0 && static_cast<std::size_t>(mesh.material) < s.scene.materials.size() &&
         s.scene.materials[static_cast<std::size_t>(mesh.material)].alpha_mode == AlphaMode::blend;
     if (blend) {
-      const glm::vec3 centre = glm::vec3(o.world_at(view.time)[3]);
-      blended.push_back({glm::length(centre - view.eye), i});
+      blended.push_back({glm::length(glm::vec3(model[3]) - view.eye), i, model});
       continue;
     }
-    draw_object(i);
+    draw_object(i, model);
   }
   // The sky fills what is still at the far plane (drawn after opaque geometry: less overdraw).
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.sky);
@@ -467,7 +522,7 @@ Result<void> SceneRenderer::draw_scene(VkCommandBuffer cmd, const SceneView& vie
               [](const Blended& a, const Blended& b) { return a.distance > b.distance; });
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.blend);
     for (const Blended& b : blended) {
-      draw_object(b.object);
+      draw_object(b.object, b.model);
     }
   }
   return {};

@@ -70,11 +70,11 @@ Result<void> record_scene_pass(VkCommandBuffer cmd, SceneSource& scene, const Re
   }
   TimerScope scope(timer, cmd, pass.name);
   const float clear[4] = {pass.clear.r, pass.clear.g, pass.clear.b, pass.clear.a};
-  target.begin_rendering(cmd, clear);
-  if (pass.scissor.extent.width != 0 && pass.scissor.extent.height != 0) {
-    vkCmdSetScissor(cmd, 0, 1, &pass.scissor);
-  }
-  Result<void> drawn = scene.draw_scene(cmd, pass.view);
+  // The scissor is the render area: nothing outside it is cleared or stored.
+  target.begin_rendering(cmd, clear, 1.0f, pass.scissor);
+  SceneView view = pass.view;
+  view.scissor = pass.scissor; // lets the scene cull what the scissor removes anyway
+  Result<void> drawn = scene.draw_scene(cmd, view);
   target.end_rendering(cmd);
   return drawn;
 }

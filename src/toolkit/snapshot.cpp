@@ -4,6 +4,7 @@
 #include <snell/toolkit/vk_check.hpp>
 
 #include "../runtime/barriers.hpp"
+#include "../runtime/runtime_internal.hpp"
 
 namespace snell {
 
@@ -43,6 +44,51 @@ ColorFormat color_format_of(VkFormat format, ColorFormat fallback) {
 
 } // namespace
 
+namespace {
+
+/// Copies `region` of level 0 (same formats; TRANSFER_SRC -> TRANSFER_DST).
+void copy_image(VkCommandBuffer cmd, VkImage from, VkImage to, VkImageAspectFlags aspect,
+                VkRect2D region) {
+  auto copy_region = vk_struct<VkImageCopy2>(VK_STRUCTURE_TYPE_IMAGE_COPY_2);
+  copy_region.srcSubresource = {aspect, 0, 0, 1};
+  copy_region.dstSubresource = copy_region.srcSubresource;
+  copy_region.srcOffset = {region.offset.x, region.offset.y, 0};
+  copy_region.dstOffset = copy_region.srcOffset;
+  copy_region.extent = {region.extent.width, region.extent.height, 1};
+  auto copy = vk_struct<VkCopyImageInfo2>(VK_STRUCTURE_TYPE_COPY_IMAGE_INFO_2);
+  copy.srcImage = from;
+  copy.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  copy.dstImage = to;
+  copy.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  copy.regionCount = 1;
+  copy.pRegions = &copy_region;
+  vkCmdCopyImage2(cmd, &copy);
+}
+
+/// Copies `region` of level 0 converting the format (nearest, same size).
+void blit_color(VkCommandBuffer cmd, VkImage from, VkImage to, VkRect2D region) {
+  auto blit_region = vk_struct<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
+  blit_region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit_region.srcOffsets[0] = {region.offset.x, region.offset.y, 0};
+  blit_region.srcOffsets[1] = {region.offset.x + static_cast<std::int32_t>(region.extent.width),
+                               region.offset.y + static_cast<std::int32_t>(region.extent.height),
+                               1};
+  blit_region.dstSubresource = blit_region.srcSubresource;
+  blit_region.dstOffsets[0] = blit_region.srcOffsets[0];
+  blit_region.dstOffsets[1] = blit_region.srcOffsets[1];
+  auto blit = vk_struct<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
+  blit.srcImage = from;
+  blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  blit.dstImage = to;
+  blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  blit.regionCount = 1;
+  blit.pRegions = &blit_region;
+  blit.filter = VK_FILTER_NEAREST;
+  vkCmdBlitImage2(cmd, &blit);
+}
+
+} // namespace
+
 Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& src,
                                    std::uint64_t frame_index) {
   if (ctx_ == nullptr) {
@@ -68,7 +114,8 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
     rd.depth = true;
     rd.mips = desc_.mips;
     rd.debug_name = "scene snapshot";
-    auto t = RenderTarget::create(*ctx_, rd);
+    // Cleared inside `cmd`: record() may itself run inside Context::submit_and_wait.
+    auto t = create_render_target(*ctx_, rd, cmd);
     if (!t) {
       return t.error();
     }
@@ -78,17 +125,24 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
     target_ = std::move(*t);
   }
   const bool depth = src.depth != VK_NULL_HANDLE;
+  const VkRect2D region = detail::clamp_area(src.region, src.extent);
+  const bool whole =
+      region.extent.width == src.extent.width && region.extent.height == src.extent.height;
+  // A partial copy keeps the rest of the older contents: the copies leave their samplable
+  // layout instead of UNDEFINED.
+  const VkImageLayout dst_old =
+      whole ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   // Sources to TRANSFER_SRC after the opaque phase's writes; the copies' level 0 and depth to
-  // TRANSFER_DST after the previous frame's reads (their contents are replaced).
+  // TRANSFER_DST after the previous frame's reads.
   const ImageBarrier before[4] = {
       {src.color, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, src.color_layout,
        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorWriters | kTransfer,
        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT, kTransfer,
        VK_ACCESS_2_TRANSFER_READ_BIT},
-      {target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+      {target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1, dst_old,
        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE, kTransfer,
        VK_ACCESS_2_TRANSFER_WRITE_BIT},
-      {target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, VK_IMAGE_LAYOUT_UNDEFINED,
+      {target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, dst_old,
        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE, kTransfer,
        VK_ACCESS_2_TRANSFER_WRITE_BIT},
       {src.depth, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1, src.depth_layout,
@@ -98,12 +152,12 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
   detail::barrier(cmd, before, depth ? 4 : 2);
   // Colour: a plain copy in the source's format, else a same-size blit that converts.
   if (target_.vk_color_format() == src.color_format) {
-    copy_image(cmd, src.color, target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, src.extent);
+    copy_image(cmd, src.color, target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, region);
   } else {
-    blit_color(cmd, src);
+    blit_color(cmd, src.color, target_.color_image(), region);
   }
   if (depth) {
-    copy_image(cmd, src.depth, target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, src.extent);
+    copy_image(cmd, src.depth, target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, region);
   }
   finish(cmd, src);
   view_proj_ = src.view_proj;
@@ -111,38 +165,21 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
   return {};
 }
 
-void SceneSnapshot::copy_image(VkCommandBuffer cmd, VkImage from, VkImage to,
-                               VkImageAspectFlags aspect, VkExtent2D extent) {
-  auto region = vk_struct<VkImageCopy2>(VK_STRUCTURE_TYPE_IMAGE_COPY_2);
-  region.srcSubresource = {aspect, 0, 0, 1};
-  region.dstSubresource = region.srcSubresource;
-  region.extent = {extent.width, extent.height, 1};
-  auto copy = vk_struct<VkCopyImageInfo2>(VK_STRUCTURE_TYPE_COPY_IMAGE_INFO_2);
-  copy.srcImage = from;
-  copy.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  copy.dstImage = to;
-  copy.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-  copy.regionCount = 1;
-  copy.pRegions = &region;
-  vkCmdCopyImage2(cmd, &copy);
-}
-
-void SceneSnapshot::blit_color(VkCommandBuffer cmd, const SnapshotSource& src) const {
-  auto region = vk_struct<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
-  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.srcOffsets[1] = {static_cast<std::int32_t>(src.extent.width),
-                          static_cast<std::int32_t>(src.extent.height), 1};
-  region.dstSubresource = region.srcSubresource;
-  region.dstOffsets[1] = region.srcOffsets[1];
-  auto blit = vk_struct<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
-  blit.srcImage = src.color;
-  blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  blit.dstImage = target_.color_image();
-  blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-  blit.regionCount = 1;
-  blit.pRegions = &region;
-  blit.filter = VK_FILTER_NEAREST;
-  vkCmdBlitImage2(cmd, &blit);
+VkRect2D union_region(VkRect2D a, VkRect2D b) {
+  const auto everything = [](const VkRect2D& r) {
+    return r.extent.width == 0 || r.extent.height == 0;
+  };
+  if (everything(a) || everything(b)) {
+    return {};
+  }
+  const std::int64_t x0 = std::min(a.offset.x, b.offset.x);
+  const std::int64_t y0 = std::min(a.offset.y, b.offset.y);
+  const std::int64_t x1 = std::max(std::int64_t{a.offset.x} + a.extent.width,
+                                   std::int64_t{b.offset.x} + b.extent.width);
+  const std::int64_t y1 = std::max(std::int64_t{a.offset.y} + a.extent.height,
+                                   std::int64_t{b.offset.y} + b.extent.height);
+  return {{static_cast<std::int32_t>(x0), static_cast<std::int32_t>(y0)},
+          {static_cast<std::uint32_t>(x1 - x0), static_cast<std::uint32_t>(y1 - y0)}};
 }
 
 void SceneSnapshot::finish(VkCommandBuffer cmd, const SnapshotSource& src) const {

@@ -151,3 +151,15 @@ TEST_CASE("context: adopt rejects missing handles with a clear message") {
   CHECK(ctx.error().code == ErrorCode::invalid_argument);
   CHECK(ctx.error().message.find("AdoptInfo") != std::string::npos);
 }
+
+TEST_CASE("context: a submit_and_wait nested in its own callback is refused, not a deadlock") {
+  test::GpuFixture gpu;
+  Result<void> inner;
+  auto outer = gpu.ctx().submit_and_wait(
+      [&](VkCommandBuffer) { inner = gpu.ctx().submit_and_wait([](VkCommandBuffer) {}); });
+  CHECK(outer.has_value());
+  REQUIRE_FALSE(inner.has_value());
+  CHECK(inner.error().message.find("inside its own callback") != std::string::npos);
+  // The context is still usable afterwards.
+  CHECK(gpu.ctx().submit_and_wait([](VkCommandBuffer) {}).has_value());
+}

@@ -383,3 +383,72 @@ TEST_CASE("toolkit: the scene renderer leaves out the objects an effect draws it
   REQUIRE(frame->render(*renderer, camera, 0.0f, effects).has_value());
   CHECK(red_pixels() > 50);
 }
+
+TEST_CASE("toolkit: a snapshot region copies only its pixels and keeps the rest") {
+  test::GpuFixture gpu;
+  constexpr std::uint32_t w = 64, h = 32;
+  auto source = RenderTarget::create(
+      gpu.ctx(), RenderTargetDesc{.width = w, .height = h, .color = ColorFormat::rgba8_unorm});
+  REQUIRE(source.has_value());
+  auto snapshot = SceneSnapshot::create(gpu.ctx(), SnapshotDesc{.mips = false});
+  REQUIRE(snapshot.has_value());
+  std::uint64_t frame = 0;
+  // Fills the source with `color`, then snapshots `region` of it.
+  const auto copy = [&](glm::vec4 color, VkRect2D region) {
+    const float clear[4] = {color.r, color.g, color.b, color.a};
+    Result<void> recorded;
+    require_ok(gpu.ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+      source->begin_rendering(cmd, clear);
+      source->end_rendering(cmd);
+      SnapshotSource src;
+      src.color = source->color_image();
+      src.color_format = source->vk_color_format();
+      src.color_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+      src.depth = source->depth_image();
+      src.depth_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+      src.extent = {w, h};
+      src.mips = false;
+      src.region = region;
+      recorded = snapshot->record(cmd, src, ++frame);
+    }));
+    require_ok(recorded);
+    auto image = read_debug_target(gpu.ctx(), snapshot->debug_targets().at(0));
+    REQUIRE_MESSAGE(image.has_value(), image.error().message);
+    return *image;
+  };
+  const auto pixel = [&](const FloatImage& image, std::uint32_t x, std::uint32_t y) {
+    const float* p = &image.rgba[(std::size_t{y} * w + x) * 4];
+    return glm::vec4(p[0], p[1], p[2], p[3]);
+  };
+  const glm::vec4 red(1, 0, 0, 1), green(0, 1, 0, 1), blue(0, 0, 1, 1), none(0, 0, 0, 0);
+  const VkRect2D first{{8, 4}, {16, 8}};     // x 8..23, y 4..11
+  const VkRect2D second{{20, 10}, {60, 40}}; // clamped to x 20..63, y 10..31
+  const auto inside = [](const VkRect2D& r, std::uint32_t x, std::uint32_t y) {
+    return x >= std::uint32_t(r.offset.x) && x < r.offset.x + r.extent.width &&
+           y >= std::uint32_t(r.offset.y) && y < r.offset.y + r.extent.height;
+  };
+  const FloatImage a = copy(red, first);
+  const FloatImage b = copy(green, second);
+  int mismatches = 0;
+  for (std::uint32_t y = 0; y < h; ++y) {
+    for (std::uint32_t x = 0; x < w; ++x) {
+      // Before any copy the snapshot is transparent black (samplable from creation).
+      const glm::vec4 want_a = inside(first, x, y) ? red : none;
+      const glm::vec4 want_b = inside(second, x, y) ? green : want_a;
+      mismatches += pixel(a, x, y) != want_a ? 1 : 0;
+      mismatches += pixel(b, x, y) != want_b ? 1 : 0;
+    }
+  }
+  CHECK(mismatches == 0);
+  const FloatImage c = copy(blue, VkRect2D{}); // everything
+  CHECK(pixel(c, 0, 0) == blue);
+  CHECK(pixel(c, w - 1, h - 1) == blue);
+
+  // The union of what effects sample: "everything" absorbs any rectangle.
+  CHECK(union_region(VkRect2D{}, first).extent.width == 0);
+  const VkRect2D u = union_region(first, VkRect2D{{30, 2}, {4, 4}});
+  CHECK(u.offset.x == 8);
+  CHECK(u.offset.y == 2);
+  CHECK(u.extent.width == 26);
+  CHECK(u.extent.height == 10);
+}

@@ -37,8 +37,9 @@ void aim_at(SceneView& view, const RenderTarget& target);
 struct ScenePass {
   const char* name = "pass"; ///< GPU timer name ("water.reflection"). Default "pass".
   SceneView view{};          ///< What to draw (aim_at the target first).
-  /// The only pixels rendered (clear included); extent {0, 0} = the whole target. Default
-  /// whole.
+  /// The render area and scissor in pixels: the only pixels cleared, drawn and stored (the
+  /// rest of the target keeps its previous contents), also handed to the scene for culling
+  /// (SceneView::scissor). Extent {0, 0} = the whole target. Default whole.
   VkRect2D scissor{{0, 0}, {0, 0}};
   glm::vec4 clear{0.0f, 0.0f, 0.0f, 1.0f}; ///< Linear clear colour. Default opaque black.
 };
