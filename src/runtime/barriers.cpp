@@ -117,6 +117,27 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView color_view, VkImageView de
   vkCmdSetScissor(cmd, 0, 1, &ri.renderArea);
 }
 
+void blit_color(VkCommandBuffer cmd, VkImage src, std::uint32_t src_level, VkOffset2D src_min,
+                VkOffset2D src_max, VkImage dst, std::uint32_t dst_level, VkOffset2D dst_min,
+                VkOffset2D dst_max, std::uint32_t layers, VkFilter filter) {
+  VkImageBlit2 region = vk_init<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, src_level, 0, layers};
+  region.srcOffsets[0] = {src_min.x, src_min.y, 0};
+  region.srcOffsets[1] = {src_max.x, src_max.y, 1};
+  region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, dst_level, 0, layers};
+  region.dstOffsets[0] = {dst_min.x, dst_min.y, 0};
+  region.dstOffsets[1] = {dst_max.x, dst_max.y, 1};
+  VkBlitImageInfo2 blit = vk_init<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
+  blit.srcImage = src;
+  blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  blit.dstImage = dst;
+  blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  blit.regionCount = 1;
+  blit.pRegions = &region;
+  blit.filter = filter;
+  vkCmdBlitImage2(cmd, &blit);
+}
+
 void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std::uint32_t height,
                    std::uint32_t mips, std::uint32_t layers, VkImageLayout level0_layout,
                    VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access) {
@@ -135,20 +156,8 @@ void generate_mips(VkCommandBuffer cmd, VkImage image, std::uint32_t width, std:
   for (std::uint32_t level = 1; level < mips; ++level) {
     const std::int32_t nw = std::max(1, w / 2);
     const std::int32_t nh = std::max(1, h / 2);
-    VkImageBlit2 region = vk_init<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
-    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers};
-    region.srcOffsets[1] = {w, h, 1};
-    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
-    region.dstOffsets[1] = {nw, nh, 1};
-    VkBlitImageInfo2 blit = vk_init<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
-    blit.srcImage = image;
-    blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    blit.dstImage = image;
-    blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    blit.regionCount = 1;
-    blit.pRegions = &region;
-    blit.filter = VK_FILTER_LINEAR;
-    vkCmdBlitImage2(cmd, &blit);
+    blit_color(cmd, image, level - 1, {0, 0}, {w, h}, image, level, {0, 0}, {nw, nh}, layers,
+               VK_FILTER_LINEAR);
     // The level just written becomes the source of the next one.
     barrier(cmd,
             ImageBarrier{image, VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers,

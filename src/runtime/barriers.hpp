@@ -52,6 +52,13 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView color, VkImageView depth, 
 void clear_to_shader_read(VkCommandBuffer cmd, VkImage color, std::uint32_t mips,
                           std::uint32_t layers, VkImage depth);
 
+/// One vkCmdBlitImage2 of colour from `src` (level `src_level`, TRANSFER_SRC_OPTIMAL) to `dst`
+/// (level `dst_level`, TRANSFER_DST_OPTIMAL) over `layers` layers: the box `src_min..src_max`
+/// (pixels, exclusive max) onto `dst_min..dst_max`.
+void blit_color(VkCommandBuffer cmd, VkImage src, std::uint32_t src_level, VkOffset2D src_min,
+                VkOffset2D src_max, VkImage dst, std::uint32_t dst_level, VkOffset2D dst_min,
+                VkOffset2D dst_max, std::uint32_t layers, VkFilter filter);
+
 /// Generates mip levels 1..mips-1 of `layers` layers by linear blits from level 0.
 /// Expects level 0 in `level0_layout` after writes in `src_stage`/`src_access`; leaves every
 /// level in SHADER_READ_ONLY_OPTIMAL, visible to kReadStages.

@@ -65,28 +65,6 @@ void copy_image(VkCommandBuffer cmd, VkImage from, VkImage to, VkImageAspectFlag
   vkCmdCopyImage2(cmd, &copy);
 }
 
-/// Copies `region` of level 0 converting the format (nearest, same size).
-void blit_color(VkCommandBuffer cmd, VkImage from, VkImage to, VkRect2D region) {
-  auto blit_region = vk_struct<VkImageBlit2>(VK_STRUCTURE_TYPE_IMAGE_BLIT_2);
-  blit_region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit_region.srcOffsets[0] = {region.offset.x, region.offset.y, 0};
-  blit_region.srcOffsets[1] = {region.offset.x + static_cast<std::int32_t>(region.extent.width),
-                               region.offset.y + static_cast<std::int32_t>(region.extent.height),
-                               1};
-  blit_region.dstSubresource = blit_region.srcSubresource;
-  blit_region.dstOffsets[0] = blit_region.srcOffsets[0];
-  blit_region.dstOffsets[1] = blit_region.srcOffsets[1];
-  auto blit = vk_struct<VkBlitImageInfo2>(VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2);
-  blit.srcImage = from;
-  blit.srcImageLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  blit.dstImage = to;
-  blit.dstImageLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-  blit.regionCount = 1;
-  blit.pRegions = &blit_region;
-  blit.filter = VK_FILTER_NEAREST;
-  vkCmdBlitImage2(cmd, &blit);
-}
-
 } // namespace
 
 Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& src,
@@ -154,7 +132,12 @@ Result<void> SceneSnapshot::record(VkCommandBuffer cmd, const SnapshotSource& sr
   if (target_.vk_color_format() == src.color_format) {
     copy_image(cmd, src.color, target_.color_image(), VK_IMAGE_ASPECT_COLOR_BIT, region);
   } else {
-    blit_color(cmd, src.color, target_.color_image(), region);
+    // A same-size blit that converts the format (nearest: no filtering).
+    const VkOffset2D lo = region.offset;
+    const VkOffset2D hi{lo.x + static_cast<std::int32_t>(region.extent.width),
+                        lo.y + static_cast<std::int32_t>(region.extent.height)};
+    detail::blit_color(cmd, src.color, 0, lo, hi, target_.color_image(), 0, lo, hi, 1,
+                       VK_FILTER_NEAREST);
   }
   if (depth) {
     copy_image(cmd, src.depth, target_.depth_image(), VK_IMAGE_ASPECT_DEPTH_BIT, region);
