@@ -2,6 +2,8 @@
 #ifndef SNELL_SCENE_COMMON_GLSL
 #define SNELL_SCENE_COMMON_GLSL
 
+#include "snell/sky.glsl"
+
 layout(set = 0, binding = 0) uniform ViewBlock {
   mat4 view_proj[6];     // one per view of a multiview pass; [0] otherwise
   mat4 inv_view_proj[6]; // for the sky's view directions
@@ -24,11 +26,8 @@ layout(push_constant) uniform DrawBlock {
 } draw;
 
 vec3 sky_color(vec3 dir) {
-  float y = dir.y;
-  if (y >= 0.0) {
-    return mix(view_block.sky_horizon.rgb, view_block.sky_zenith.rgb, pow(y, 0.6));
-  }
-  return mix(view_block.sky_horizon.rgb, view_block.sky_ground.rgb, pow(-y, 0.4));
+  return sky_gradient(dir, view_block.sky_zenith.rgb, view_block.sky_horizon.rgb,
+                      view_block.sky_ground.rgb);
 }
 
 #endif

@@ -47,7 +47,11 @@ template <class P> class ParamTable {
 public:
   /// `effect`: the registered name ("water"), used in every error message. `doc`: one line
   /// about the effect (ParamSchema::doc).
-  ParamTable(std::string effect, std::string doc) {
+  ParamTable(std::string effect, std::string doc)
+      : ParamTable(std::move(effect), std::move(doc), P{}) {}
+  /// The same with the schema's defaults read from `defaults` instead of P{}: one struct, two
+  /// registered names with their own defaults (glass and ice).
+  ParamTable(std::string effect, std::string doc, P defaults) : defaults_(std::move(defaults)) {
     schema_.effect = std::move(effect);
     schema_.doc = std::move(doc);
   }
@@ -229,8 +233,8 @@ private:
 
   ParamTable& add(ParamSpec spec, Entry entry) {
     if (entry.get) {
-      // The default is read through the entry itself, so it is P{}'s by construction.
-      auto value = entry.get(schema_, spec, P{});
+      // The default is read through the entry itself, so it is defaults_'s by construction.
+      auto value = entry.get(schema_, spec, defaults_);
       spec.default_value = value ? *value : ParamValue{std::string()};
     }
     schema_.params.push_back(std::move(spec));
@@ -247,6 +251,7 @@ private:
     return entries_.size();
   }
 
+  P defaults_; ///< The values the schema reports as defaults.
   ParamSchema schema_;
   std::vector<Entry> entries_; ///< Parallel to schema_.params.
 };

@@ -11,9 +11,10 @@
 //   snell/toolkit/deferred_release.hpp  DeferredRelease: destruction past the frames in flight
 //   snell/toolkit/scaled_target.hpp     ScaledTarget: a target following the output at a scale
 //   snell/toolkit/scene_pass.hpp        mirrored / clipped views, scene passes, cube captures
-//   snell/toolkit/surfaces.hpp          Surfaces: meshes from scene nodes, arrays or shapes
-//   snell/snapshot.hpp                  SceneSnapshot: the frame's opaque colour + depth copy
-//   snell/context.hpp, images.hpp, buffer.hpp, gpu_timer.hpp: the runtime's resources
+//   snell/toolkit/screen_rect.hpp       screen_rect: the pixels a world box covers (scissors,
+//   regions) snell/toolkit/surfaces.hpp          Surfaces: meshes from scene nodes, arrays or
+//   shapes snell/snapshot.hpp                  SceneSnapshot: the frame's opaque colour + depth
+//   copy snell/context.hpp, images.hpp, buffer.hpp, gpu_timer.hpp: the runtime's resources
 #pragma once
 
 #include <snell/buffer.hpp>
@@ -27,6 +28,7 @@
 #include <snell/toolkit/descriptors.hpp>
 #include <snell/toolkit/scaled_target.hpp>
 #include <snell/toolkit/scene_pass.hpp>
+#include <snell/toolkit/screen_rect.hpp>
 #include <snell/toolkit/surfaces.hpp>
 #include <snell/toolkit/uniform_ring.hpp>
 #include <snell/toolkit/vk_check.hpp>

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -59,7 +60,21 @@ struct Material {
   bool double_sided = false;                ///< Disable back-face culling. Default false.
   float transmission = 0.0f;                ///< KHR_materials_transmission factor [0,1]. Default 0.
   float ior = 1.5f;                         ///< KHR_materials_ior. Default 1.5 (the glTF default).
-  glm::vec2 uv_scale{1.0f};                 ///< Texture coordinate scale (tiling). Default 1.
+  /// KHR_materials_volume thicknessFactor: thickness of the volume under the surface, in the
+  /// mesh's own coordinate space (scaled by the object's transform along the normal). 0 =
+  /// thin-walled (no volume: light passes without a lateral shift). Default 0. [0, inf).
+  float thickness = 0.0f;
+  /// KHR_materials_volume attenuationColor: linear colour white light has after travelling
+  /// attenuation_distance through the volume (Beer-Lambert). Default (1, 1, 1). Each in [0, 1].
+  glm::vec3 attenuation_color{1.0f};
+  /// KHR_materials_volume attenuationDistance, in world units: the distance at which light is
+  /// tinted to attenuation_color. Default +infinity (no attenuation, glTF's default). (0, inf].
+  float attenuation_distance = std::numeric_limits<float>::infinity();
+  /// KHR_materials_dispersion: 20 / Abbe number (0 = none; crown glass ~0.3, diamond ~0.9).
+  /// Spreads the IOR per channel: half-spread = (ior - 1) * 0.025 * dispersion, red below and
+  /// blue above `ior` (the extension's reference formula). Default 0. [0, inf).
+  float dispersion = 0.0f;
+  glm::vec2 uv_scale{1.0f}; ///< Texture coordinate scale (tiling). Default 1.
 };
 
 /// A triangle list with one material (a glTF primitive).

@@ -58,16 +58,11 @@ public:
     SNELL_ASSIGN_OR_RETURN(sets_, DescriptorSets::create(*ctx_, sd));
     sets_.set_buffer(kUniforms, ubo_.buffer(), 0, ubo_.block_size());
     sets_.set_image(kNormals, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
-    GraphicsPipelineDesc pd;
-    pd.label = "water surface pipeline";
-    pd.vertex = water::shaders::water_vert;
-    pd.fragment = water::shaders::water_frag;
-    pd.set_layouts = {sets_.layout()};
-    pd.state.color_formats = {info.color_format};
-    pd.state.depth_format = info.depth_format;
-    // The surface does not write depth: the scene's depth behind it stays for effects after it.
-    pd.state.depth_write = false;
-    SNELL_ASSIGN_OR_RETURN(pipeline_, Pipeline::create(*ctx_, pd));
+    SNELL_ASSIGN_OR_RETURN(
+        pipeline_,
+        Pipeline::create(
+            *ctx_, surface_pipeline_desc(info, "water surface pipeline", water::shaders::water_vert,
+                                         water::shaders::water_frag, {sets_.layout()})));
     // The rectangle: the unit quad, placed by the vertex shader from the uniform block.
     SNELL_ASSIGN_OR_RETURN(surface_, Surfaces::shape(*ctx_, Shape::quad));
     return {};
@@ -278,41 +273,18 @@ private:
     }
   }
 
-  /// The texels of the targets the surface shader can read: the projected water rectangle,
-  /// widened by the largest lookup offset (|slope| <= 2 sqrt(2) wave_height, times distortion)
-  /// and two texels for the bilinear and gather footprints. The whole target when a corner is
-  /// behind the eye (the projection of the rectangle is then unbounded).
-  /// The rectangle of a target of `extent` covering the main view's screen (uv) area that the
-  /// surface samples: the water's projected bounds plus the largest ripple offset.
+  /// The rectangle of a target of `extent` covering the main view's screen area that the
+  /// surface samples: the water's projected bounds widened by the largest lookup offset
+  /// (|slope| <= 2 sqrt(2) wave_height, times distortion, in uv) and two texels for the
+  /// bilinear and gather footprints.
   [[nodiscard]] VkRect2D sampled_rect(const SceneView& main, VkExtent2D extent) const {
-    const VkRect2D full{{0, 0}, extent};
     const WaterParams& p = params_;
-    const glm::mat4 vp = main.proj * main.view;
-    glm::vec2 lo(1e30f), hi(-1e30f);
-    for (int i = 0; i < 4; ++i) {
-      const glm::vec2 corner =
-          p.center + 0.5f * p.size * glm::vec2(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f);
-      const glm::vec4 clip = vp * glm::vec4(corner.x, p.height, corner.y, 1.0f);
-      if (!(clip.w > 1e-4f)) {
-        return full;
-      }
-      const glm::vec2 uv = project_to_uv(clip, ClipConvention::vulkan);
-      lo = glm::min(lo, uv);
-      hi = glm::max(hi, uv);
-    }
+    const glm::vec2 half = 0.5f * p.size;
+    const Aabb water{{p.center.x - half.x, p.height, p.center.y - half.y},
+                     {p.center.x + half.x, p.height, p.center.y + half.y}};
     const glm::vec2 size(static_cast<float>(extent.width), static_cast<float>(extent.height));
-    const glm::vec2 margin = glm::vec2(2.83f * p.wave_height * p.distortion) + 2.0f / size;
-    lo = glm::clamp(lo - margin, glm::vec2(0.0f), glm::vec2(1.0f)) * size;
-    hi = glm::clamp(hi + margin, glm::vec2(0.0f), glm::vec2(1.0f)) * size;
-    const auto x0 = static_cast<std::int32_t>(std::floor(lo.x));
-    const auto y0 = static_cast<std::int32_t>(std::floor(lo.y));
-    const auto x1 = static_cast<std::uint32_t>(std::ceil(hi.x));
-    const auto y1 = static_cast<std::uint32_t>(std::ceil(hi.y));
-    if (x1 <= static_cast<std::uint32_t>(x0) || y1 <= static_cast<std::uint32_t>(y0)) {
-      return VkRect2D{{0, 0}, {1, 1}}; // the water is off screen: render (almost) nothing
-    }
-    return VkRect2D{{x0, y0},
-                    {x1 - static_cast<std::uint32_t>(x0), y1 - static_cast<std::uint32_t>(y0)}};
+    const glm::vec2 margin = 2.83f * p.wave_height * p.distortion * size + 2.0f;
+    return screen_rect(main.proj * main.view, water, extent, margin);
   }
 
   const Context* ctx_ = nullptr;

@@ -14,9 +14,11 @@ namespace {
 
 // The extensions the converter reads. A file that *requires* any other extension would be
 // rendered wrongly (compressed geometry, texture transforms, ...), so it is refused.
-constexpr std::array<std::string_view, 5> supported_extensions = {
-    "KHR_lights_punctual", "KHR_materials_transmission", "KHR_materials_ior",
-    "KHR_materials_emissive_strength", "KHR_mesh_quantization"};
+constexpr std::array<std::string_view, 7> supported_extensions = {
+    "KHR_lights_punctual",  "KHR_materials_transmission",
+    "KHR_materials_ior",    "KHR_materials_emissive_strength",
+    "KHR_materials_volume", "KHR_materials_dispersion",
+    "KHR_mesh_quantization"};
 
 template <class T> std::string count_text(const std::vector<T>& items, const char* plural) {
   return "(" + std::to_string(items.size()) + " " + plural + ")";

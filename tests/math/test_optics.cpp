@@ -160,3 +160,37 @@ TEST_CASE("Schlick stays within its known error of the exact curve (air to glass
   CHECK(fresnel_schlick(1.0f, 0.04f) == doctest::Approx(0.04f));
   CHECK(fresnel_schlick(0.0f, 0.04f) == doctest::Approx(1.0f));
 }
+
+TEST_CASE("slab_lateral_shift: reference values, ray tracing through both faces, limits") {
+  // t sin(ti - tt) / cos(tt) for glass (1.5) in air, t = 1: 30 deg -> 0.193814, 60 deg -> 0.512472
+  // (computed separately in double precision).
+  const float eta = 1.0f / snell::ior::glass; // outside n = 1 (ior::air is 1.000293)
+  CHECK(snell::slab_lateral_shift(1.0f, std::cos(glm::radians(30.0f)), eta).value() ==
+        doctest::Approx(0.193814).epsilon(1e-4));
+  CHECK(snell::slab_lateral_shift(1.0f, std::cos(glm::radians(60.0f)), eta).value() ==
+        doctest::Approx(0.512472).epsilon(1e-4));
+  CHECK(snell::slab_lateral_shift(2.0f, 1.0f, eta).value() == doctest::Approx(0.0));
+  CHECK(snell::slab_lateral_shift(2.0f, 0.5f, 1.0f).value() == doctest::Approx(0.0));
+  // Grazing incidence from air: the shift tends to the thickness.
+  CHECK(snell::slab_lateral_shift(1.0f, 1e-6f, eta).value() == doctest::Approx(1.0).epsilon(1e-3));
+  // From the denser side beyond the critical angle nothing crosses.
+  CHECK_FALSE(snell::slab_lateral_shift(1.0f, std::cos(glm::radians(60.0f)), 1.5f).has_value());
+  // Independent check: trace through the entry face z = 0 and the exit face z = -t with
+  // refract(), then measure the distance between the incident line and the exit line.
+  float previous = -1.0f;
+  for (int deg = 0; deg <= 85; deg += 5) {
+    const float a = glm::radians(static_cast<float>(deg));
+    const glm::vec3 dir(std::sin(a), 0.0f, -std::cos(a));
+    const glm::vec3 normal(0.0f, 0.0f, 1.0f);
+    const float t = 0.7f;
+    const glm::vec3 inside = snell::refract(dir, normal, eta).value();
+    const glm::vec3 exit = inside * (t / -inside.z); // from the origin to z = -t
+    const glm::vec3 out = snell::refract(inside, normal, 1.0f / eta).value();
+    CHECK(glm::length(out - dir) < 1e-5f); // leaves parallel to where it came from
+    const glm::vec3 across = exit - dir * glm::dot(exit, dir);
+    const float shift = snell::slab_lateral_shift(t, std::cos(a), eta).value();
+    CHECK(shift == doctest::Approx(glm::length(across)).epsilon(1e-4));
+    CHECK(shift >= previous); // grows with the angle
+    previous = shift;
+  }
+}

@@ -1,10 +1,19 @@
 // glTF loading: materials (factors, alpha, extensions) and textures (images decoded to RGBA8,
-// texture -> image mapping, sRGB flag).
+// texture -> image mapping, sRGB flag), and the glass_grid sample asset.
 #include "gltf_builder.hpp"
 
 #include <snell/scene.hpp>
 
 #include <doctest/doctest.h>
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
 
 using namespace gltf_test;
 
@@ -159,4 +168,161 @@ TEST_CASE("gltf: material values outside their glTF range are refused") {
     CHECK(contains(r.error().message, "material 0"));
     CHECK(contains(r.error().message, c.reason));
   }
+}
+
+TEST_CASE("gltf: KHR_materials_volume and KHR_materials_dispersion are read, also when required") {
+  Builder b = quad_model();
+  b.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume",
+                             "KHR_materials_dispersion"};
+  b.doc["extensionsRequired"] = {"KHR_materials_volume", "KHR_materials_dispersion"};
+  b.add("materials", {{"name", "flint"},
+                      {"extensions",
+                       {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                        {"KHR_materials_volume",
+                         {{"thicknessFactor", 0.8},
+                          {"attenuationDistance", 2.5},
+                          {"attenuationColor", {0.9, 0.5, 0.25}}}},
+                        {"KHR_materials_dispersion", {{"dispersion", 1.0}}}}}});
+  b.add("materials", {{"name", "plain"}});
+  // Both extensions present with none of their keys: their glTF defaults.
+  b.add("materials", {{"name", "empty volume"},
+                      {"extensions",
+                       {{"KHR_materials_volume", json::object()},
+                        {"KHR_materials_dispersion", json::object()}}}});
+  b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+  TempDir dir;
+  const snell::Scene scene = load_ok(b.write(dir, "volume", Container::glb));
+  REQUIRE(scene.materials.size() == 3);
+  const snell::Material& m = scene.materials[0];
+  CHECK(m.transmission == doctest::Approx(1.0));
+  CHECK(m.thickness == doctest::Approx(0.8));
+  CHECK(m.attenuation_distance == doctest::Approx(2.5));
+  CHECK(m.attenuation_color.x == doctest::Approx(0.9));
+  CHECK(m.attenuation_color.y == doctest::Approx(0.5));
+  CHECK(m.attenuation_color.z == doctest::Approx(0.25));
+  CHECK(m.dispersion == doctest::Approx(1.0));
+  for (const std::size_t i : {std::size_t{1}, std::size_t{2}}) {
+    const snell::Material& d = scene.materials[i];
+    CAPTURE(d.name);
+    CHECK(d.thickness == 0.0f); // Thin-walled.
+    CHECK(d.attenuation_color == glm::vec3(1.0f));
+    CHECK(std::isinf(d.attenuation_distance));
+    CHECK(d.attenuation_distance > 0.0f);
+    CHECK(d.dispersion == 0.0f);
+  }
+}
+
+TEST_CASE("gltf: volume and dispersion values outside their glTF range are refused") {
+  struct Case {
+    std::string extension;
+    json values;
+    std::string field;  // In the message.
+    std::string detail; // Also in the message: the value and the valid range, or what is wrong.
+  };
+  const Case cases[] = {
+      {"KHR_materials_volume", {{"thicknessFactor", -0.25}}, "thicknessFactor", "-0.25"},
+      {"KHR_materials_volume", {{"thicknessFactor", "thick"}}, "thicknessFactor", "not a number"},
+      {"KHR_materials_volume", {{"attenuationDistance", 0.0}}, "attenuationDistance", "(0, inf)"},
+      {"KHR_materials_volume", {{"attenuationDistance", -3.0}}, "attenuationDistance", "-3"},
+      // A finite double that no float holds.
+      {"KHR_materials_volume",
+       {{"attenuationDistance", 1e39}},
+       "attenuationDistance",
+       "1e+39 is not a finite float"},
+      {"KHR_materials_volume",
+       {{"attenuationColor", {1.5, 0.0, 0.0}}},
+       "attenuationColor[0]",
+       "1.5 is outside [0, 1]"},
+      {"KHR_materials_volume",
+       {{"attenuationColor", {0.5, -0.1, 0.5}}},
+       "attenuationColor[1]",
+       "-0.1"},
+      {"KHR_materials_volume", {{"attenuationColor", {0.5, 0.5}}}, "attenuationColor", "3 numbers"},
+      {"KHR_materials_volume",
+       {{"attenuationColor", {0.5, 0.5, 0.5, 1.0}}},
+       "attenuationColor",
+       "(it has 4)"},
+      {"KHR_materials_volume", {{"attenuationColor", "red"}}, "attenuationColor", "3 numbers"},
+      {"KHR_materials_volume",
+       {{"attenuationColor", {0.5, "x", 0.5}}},
+       "attenuationColor[1]",
+       "not a number"},
+      {"KHR_materials_dispersion", {{"dispersion", -1.0}}, "dispersion", "[0, inf)"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.field);
+    CAPTURE(c.detail);
+    Builder b = quad_model();
+    b.add("materials", {{"name", "ok"}});
+    b.add("materials", {{"name", "bad glass"}, {"extensions", {{c.extension, c.values}}}});
+    TempDir dir;
+    const snell::Result<snell::Scene> r = snell::load_gltf(b.write(dir, "badvol", Container::glb));
+    REQUIRE_FALSE(r);
+    CHECK(r.error().code == snell::ErrorCode::parse_error);
+    CHECK(contains(r.error().message, "badvol.glb"));
+    CHECK(contains(r.error().message, "material 1 'bad glass'"));
+    CHECK(contains(r.error().message, c.extension));
+    CHECK(contains(r.error().message, c.field));
+    CHECK(contains(r.error().message, c.detail));
+  }
+}
+
+TEST_CASE("gltf: samples/assets/glass_grid.gltf loads with its eight glass materials in view") {
+  const std::filesystem::path path =
+      std::filesystem::path(SNELL_SAMPLE_ASSETS_DIR) / "glass_grid.gltf";
+  const snell::Scene scene = load_ok(path);
+  std::vector<int> glass; // Material indices with transmission.
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (scene.materials[i].transmission > 0.0f) {
+      CHECK(scene.materials[i].transmission == 1.0f);
+      glass.push_back(static_cast<int>(i));
+    }
+  }
+  REQUIRE(glass.size() == 8);
+  // Named for what they show (the script's order: spheres by IOR, then the slabs).
+  const char* const names[] = {"ior_1.1",     "ior_1.33",  "ior_1.5",   "ior_2.0",
+                               "thin_walled", "rough_0.3", "rough_0.6", "dispersion_1.0"};
+  for (std::size_t i = 0; i < glass.size(); ++i) {
+    CHECK(scene.materials[static_cast<std::size_t>(glass[i])].name == names[i]);
+  }
+  auto count = [&](auto&& predicate) {
+    int n = 0;
+    for (const int i : glass) {
+      n += predicate(scene.materials[static_cast<std::size_t>(i)]) ? 1 : 0;
+    }
+    return n;
+  };
+  for (const float ior : {1.1f, 1.33f, 1.5f, 2.0f}) {
+    CAPTURE(ior);
+    CHECK(count([ior](const snell::Material& m) { return m.ior == doctest::Approx(ior); }) >= 1);
+  }
+  CHECK(count([](const snell::Material& m) { return m.dispersion == 1.0f; }) == 1);
+  CHECK(count([](const snell::Material& m) { return m.thickness == 0.0f; }) == 1);
+  CHECK(count([](const snell::Material& m) { return m.roughness > 0.0f; }) == 2);
+
+  // Every glass object lies wholly inside the file's camera at 16:9 (the CLI's default aspect),
+  // so a render shows all eight.
+  REQUIRE_FALSE(scene.cameras.empty());
+  const snell::CameraDesc& cam = scene.cameras[0];
+  const glm::mat4 view_proj = glm::perspective(cam.yfov, 16.0f / 9.0f, cam.z_near, cam.z_far) *
+                              glm::lookAt(cam.eye, cam.target, cam.up);
+  int glass_objects = 0;
+  for (const snell::Object& object : scene.objects) {
+    const snell::Mesh& mesh = scene.meshes[static_cast<std::size_t>(object.mesh)];
+    if (std::find(glass.begin(), glass.end(), mesh.material) == glass.end()) {
+      continue;
+    }
+    ++glass_objects;
+    CAPTURE(object.name);
+    float nearest = std::numeric_limits<float>::infinity(); // Smallest clip w: > 0 is in front.
+    float extent = 0.0f; // Largest |x| or |y| in normalised device coordinates.
+    for (const snell::Vertex& v : mesh.vertices) {
+      const glm::vec4 clip = view_proj * object.transform * glm::vec4(v.position, 1.0f);
+      nearest = std::min(nearest, clip.w);
+      extent = std::max({extent, std::abs(clip.x / clip.w), std::abs(clip.y / clip.w)});
+    }
+    CHECK(nearest > 0.0f);
+    CHECK(extent < 1.0f);
+  }
+  CHECK(glass_objects == 8);
 }

@@ -102,4 +102,33 @@ inline constexpr float diamond = 2.417f;
   return std::asin(n2 / n1);
 }
 
+/// Sideways displacement of a ray that crosses a slab with parallel faces (a window pane, a
+/// glass block): it enters at angle theta_i, travels at theta_t inside (Snell) and leaves
+/// parallel to where it came from, shifted perpendicular to its direction by
+/// `thickness * sin(theta_i - theta_t) / cos(theta_t)`.
+///
+/// @param thickness distance between the faces (any unit; the result is in the same), >= 0.
+/// @param cos_theta_i cosine of the incidence angle at the entry face, in [0, 1] (clamped;
+///        absolute value used).
+/// @param eta n1 / n2, outside over inside (> 0); a slab of glass in air: 1 / 1.5.
+/// @return the shift, >= 0 (0 at normal incidence and for eta == 1; it grows with the angle
+///         and reaches `thickness` at grazing incidence from the rarer medium), or
+///         `std::nullopt` when the ray cannot enter (total internal reflection, eta > 1 beyond
+///         the critical angle).
+[[nodiscard]] inline std::optional<float> slab_lateral_shift(float thickness, float cos_theta_i,
+                                                             float eta) noexcept {
+  const float cos_i = std::min(std::abs(cos_theta_i), 1.0f);
+  const float sin_i = std::sqrt(std::max(0.0f, 1.0f - cos_i * cos_i));
+  const float sin_t = eta * sin_i;
+  if (sin_t > 1.0f) {
+    return std::nullopt;
+  }
+  const float cos_t = std::sqrt(std::max(0.0f, 1.0f - sin_t * sin_t));
+  if (cos_t <= 0.0f) {
+    return std::nullopt; // exactly at the critical angle: the ray runs along the face
+  }
+  // sin(ti - tt) = sin_i cos_t - cos_i sin_t
+  return thickness * (sin_i * cos_t - cos_i * sin_t) / cos_t;
+}
+
 } // namespace snell

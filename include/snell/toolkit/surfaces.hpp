@@ -6,6 +6,8 @@
 #pragma once
 
 #include <snell/buffer.hpp>
+#include <snell/effect.hpp>
+#include <snell/pipeline.hpp>
 #include <snell/scene.hpp>
 #include <snell/span.hpp>
 
@@ -13,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace snell {
@@ -74,5 +77,25 @@ private:
   std::vector<Surface> surfaces_;
   std::vector<int> objects_;
 };
+
+/// The pipeline description of an effect's surfaces, drawn in phase 5 inside the host's main
+/// rendering: its colour and depth formats from `info`, snell::Vertex input, depth test LESS,
+/// no depth write (the opaque depth behind a transmissive surface stays for the effects drawn
+/// after it), no blending. `label` names it in errors; `vertex`/`fragment` are SPIR-V; set i of
+/// the layout is `set_layouts[i]`. Adjust the returned struct for anything else.
+[[nodiscard]] inline GraphicsPipelineDesc
+surface_pipeline_desc(const EffectCreateInfo& info, const char* label,
+                      Span<const std::uint32_t> vertex, Span<const std::uint32_t> fragment,
+                      std::vector<VkDescriptorSetLayout> set_layouts) {
+  GraphicsPipelineDesc desc;
+  desc.label = label;
+  desc.vertex = vertex;
+  desc.fragment = fragment;
+  desc.set_layouts = std::move(set_layouts);
+  desc.state.color_formats = {info.color_format};
+  desc.state.depth_format = info.depth_format;
+  desc.state.depth_write = false;
+  return desc;
+}
 
 } // namespace snell
