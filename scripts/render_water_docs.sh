@@ -42,113 +42,11 @@ fi
 # ==== --check-table ==============================================================================
 # Every water parameter printed by `snell list` must have a row in the table between
 # <!-- water-params:begin --> and <!-- water-params:end --> of docs/water.md with the same name,
-# type, default, range and unit (backticks are ignored), and the table must have no other rows.
+# type, default, range and unit, and the table must have no other rows
+# (scripts/check_params_table.py, shared with the other effects' pages).
 if [[ $mode == check ]]; then
-  if [[ ! -f "$doc" ]]; then
-    echo "render_water_docs.sh: $doc does not exist" >&2
-    exit 1
-  fi
-  list_out="$("$snell" list)" || {
-    echo "render_water_docs.sh: '$snell list' failed" >&2
-    exit 1
-  }
-  SNELL_LIST="$list_out" python3 - "$doc" <<'PY'
-import os, re, sys
-
-def parse_list(text):
-    """Parses the water section of `snell list`, which prints each parameter with
-    printf("  %-20s %-6s default %-18s %-26s %-4s %s\n", name, type, default, range, unit, doc)."""
-    params, in_water = [], False
-    for line in text.splitlines():
-        if not line.startswith("  "):
-            in_water = line.startswith("water:")
-            continue
-        if not in_water:
-            continue
-        pos = 2
-
-        def token(width, bracketed=False):
-            nonlocal pos
-            if bracketed and line.startswith("[", pos):
-                end = line.index("]", pos) + 1
-            else:
-                end = pos
-                while end < len(line) and line[end] != " ":
-                    end += 1
-            value = line[pos:end]
-            pos = max(end, pos + width) + 1  # the field's padding, then the separating space
-            return value.strip()
-
-        name = token(20)
-        ptype = token(6)
-        if not line.startswith("default ", pos):
-            sys.exit(f"check-table: cannot parse `snell list` line: {line!r}")
-        pos += len("default ")
-        default = token(18)
-        prange = token(26, bracketed=True)
-        unit = token(4)
-        params.append((name, ptype, default, prange, unit))
-    return params
-
-def parse_table(path):
-    rows, inside = {}, False
-    for number, line in enumerate(open(path, encoding="utf-8"), 1):
-        if "<!-- water-params:begin -->" in line:
-            inside = True
-            continue
-        if "<!-- water-params:end -->" in line:
-            inside = False
-            continue
-        if not inside or not line.startswith("|"):
-            continue
-        # Cells split at unescaped pipes; `a\|b` in a cell (an enumeration's choices) is a|b.
-        cells = [c.strip().replace("\\|", "|")
-                 for c in re.split(r"(?<!\\)\|", line.strip()[1:-1])]
-        if len(cells) < 6 or set(cells[0]) <= set("-: ") or cells[0].lower() == "name":
-            continue
-        key = cells[0].strip("`")
-        if key in rows:
-            print(f"check-table: {path}:{number}: '{key}' has two rows")
-            rows[key] = None
-            continue
-        got = [c.strip("`").strip() for c in cells[1:5]]
-        for column in (2, 3):  # a dash in the range or unit column means none
-            if got[column] in ("-", "\u2013", "\u2014"):
-                got[column] = ""
-        rows[key] = tuple(got)
-    return rows
-
-params = parse_list(os.environ["SNELL_LIST"])
-if not params:
-    sys.exit("check-table: `snell list` printed no water parameters")
-rows = parse_table(sys.argv[1])
-if not rows:
-    sys.exit(f"check-table: no table between <!-- water-params:begin/end --> in {sys.argv[1]}")
-errors = 0
-fields = ("type", "default", "range", "unit")
-for name, *expected in params:
-    got = rows.get(name)
-    if got is None:
-        print(f"check-table: parameter '{name}' is missing from the table"
-              if name not in rows else f"check-table: '{name}' is listed twice")
-        errors += 1
-        continue
-    for field, want, have in zip(fields, expected, got):
-        if want != have:
-            print(f"check-table: '{name}': {field} is '{have}' in the table, `snell list` says '{want}'")
-            errors += 1
-known = {p[0] for p in params}
-for name in rows:
-    if name not in known:
-        print(f"check-table: the table has '{name}', which `snell list` does not know")
-        errors += 1
-if errors:
-    print(f"check-table: {errors} mismatch(es) between docs/water.md and `snell list`")
-    sys.exit(1)
-print(f"check-table: all {len(params)} water parameters match `snell list` "
-      "(name, type, default, range, unit)")
-PY
-  exit $?
+  exec python3 "$repo_root/scripts/check_params_table.py" --snell "$snell" --effect water \
+    --doc "$doc"
 fi
 
 # ==== render =====================================================================================

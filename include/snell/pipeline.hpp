@@ -42,10 +42,12 @@ struct RasterState {
 };
 
 /// Creates a graphics pipeline from modules (entry points "main") and a layout the caller owns.
-/// Errors name `name` and the VkResult.
+/// `constants`: specialization constants of both stages, constant_id i = constants[i] (32-bit
+/// each; bool constants take 0 or 1). Default none. Errors name `name` and the VkResult.
 [[nodiscard]] Result<VkPipeline>
 create_graphics_pipeline(VkDevice device, VkShaderModule vertex, VkShaderModule fragment,
-                         VkPipelineLayout layout, const RasterState& state, std::string_view name);
+                         VkPipelineLayout layout, const RasterState& state, std::string_view name,
+                         Span<const std::uint32_t> constants = {});
 
 /// A graphics pipeline described with SPIR-V: what Pipeline::create takes.
 struct GraphicsPipelineDesc {
@@ -55,6 +57,10 @@ struct GraphicsPipelineDesc {
   std::vector<VkDescriptorSetLayout> set_layouts{};  ///< Set i = set_layouts[i]. Default none.
   std::vector<VkPushConstantRange> push_constants{}; ///< Default none.
   RasterState state{}; ///< Attachments, samples, view mask, depth, blending, topology.
+  /// Specialization constants of both stages: constant_id i takes constants[i] (32-bit each).
+  /// Branches on them are removed when the pipeline is built: one shader, cheap variants (on
+  /// lavapipe every branch of a shader costs, taken or not). Default none.
+  std::vector<std::uint32_t> constants{};
 };
 
 /// A compute pipeline described with SPIR-V.

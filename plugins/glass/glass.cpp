@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <vector>
 
@@ -37,8 +38,8 @@ struct GlassBlock {
 /// std140 mirror of GlassDraw: one per draw, from a ring of its own.
 struct DrawBlock {
   glm::mat4 model;
-  glm::uvec4 index; ///< surface, count, layers, fresnel
-  glm::uvec4 view;  ///< debug view
+  glm::uvec4 index;   ///< surface, count, layers, unused
+  SurfaceRecord self; ///< == GlassBlock::surfaces[index.x]
 };
 
 enum Binding : std::uint32_t { kUniforms, kBackground, kBackgroundDepth, kNormals, kColors, kDraw };
@@ -50,9 +51,29 @@ struct Drawn {
   glm::mat4 model{1.0f};         ///< Object to world this frame.
   bool cull_back = false; ///< Solid: only the faces toward the eye (the volume does the rest).
   SurfaceRecord record{};
-  float distance = 0.0f; ///< From the eye to its centre (drawn farthest first).
-  Aabb bounds{};         ///< World bounds, grown by its thickness.
+  float distance = 0.0f;     ///< From the eye to its centre (drawn farthest first).
+  Aabb bounds{};             ///< World bounds, grown by its thickness.
+  std::uint32_t variant = 0; ///< Key of its pipeline in Glass::pipelines_.
 };
+
+/// Feature bits of the shader's kFeatures specialization constant (glass_common.glsl).
+enum Feature : std::uint32_t {
+  kShift = 1u,
+  kLayers = 2u,
+  kTextured = 4u,
+  kRough = 8u,
+  kDispersion = 16u,
+};
+
+/// The features one surface needs alone.
+std::uint32_t features_of(const SurfaceRecord& r) {
+  std::uint32_t f = 0;
+  f |= r.center.w > 0.0f ? kShift : 0u;
+  f |= r.params.w > 0.0f ? kTextured : 0u;
+  f |= r.normal.w > 0.0f ? kRough : 0u;
+  f |= r.params.x > 0.0f ? kDispersion : 0u;
+  return f;
+}
 
 /// The scale of a world transform along an object-space direction, for thicknesses given "in
 /// the mesh's coordinate space" (KHR_materials_volume): the distance between two planes `t`
@@ -109,11 +130,9 @@ public:
     const VkSampler repeat = ctx_->sampler(StandardSampler::linear_repeat);
     sets_.set_image(kNormals, normal_map_.view(), repeat);
     sets_.set_image(kColors, color_map_.view(), repeat);
-    SNELL_ASSIGN_OR_RETURN(
-        pipeline_,
-        Pipeline::create(
-            *ctx_, surface_pipeline_desc(info, "glass surface pipeline", glass::shaders::glass_vert,
-                                         glass::shaders::glass_frag, {sets_.layout()})));
+    pipeline_desc_ =
+        surface_pipeline_desc(info, "glass surface pipeline", glass::shaders::glass_vert,
+                              glass::shaders::glass_frag, {sets_.layout()});
     SNELL_ASSIGN_OR_RETURN(pane_, Surfaces::shape(*ctx_, Shape::quad));
     return {};
   }
@@ -157,6 +176,7 @@ public:
     release_.collect(frame_);
     use_snapshot_ = info.snapshot != nullptr;
     collect_surfaces(info);
+    SNELL_TRY(make_variants());
     if (!use_snapshot_ && !drawn_.empty()) {
       // No snapshot from the host: the effect renders the opaque scene behind itself.
       bool made = false;
@@ -228,7 +248,6 @@ public:
     }
     std::uint32_t offset = 0;
     SNELL_ASSIGN_OR_RETURN(offset, ubo_.push(frame_, b));
-    pipeline_.bind(cmd);
     // Farthest first: a nearer surface is drawn over a farther one, and sees it by tracing.
     std::vector<std::size_t> order(drawn_.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
@@ -237,16 +256,21 @@ public:
     });
     // Alone, nothing can stand behind a surface: one layer.
     const auto layers = drawn_.size() > 1 ? static_cast<std::uint32_t>(p.max_layers) : 1u;
+    const Pipeline* bound = nullptr;
     for (const std::size_t i : order) {
       const Drawn& d = drawn_[i];
       const DrawBlock draw{d.model,
                            glm::uvec4(static_cast<std::uint32_t>(i),
-                                      static_cast<std::uint32_t>(drawn_.size()), layers,
-                                      static_cast<std::uint32_t>(p.fresnel)),
-                           glm::uvec4(static_cast<std::uint32_t>(p.debug_view), 0u, 0u, 0u)};
+                                      static_cast<std::uint32_t>(drawn_.size()), layers, 0u),
+                           d.record};
+      const Pipeline& pipeline = pipelines_.at(d.variant);
+      if (&pipeline != bound) {
+        pipeline.bind(cmd);
+        bound = &pipeline;
+      }
       std::uint32_t offsets[2] = {offset, 0}; // dynamic offsets in binding order: 0, then 5
       SNELL_ASSIGN_OR_RETURN(offsets[1], draws_.push(frame_, draw));
-      sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), frame_, offsets, 2);
+      sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), frame_, offsets, 2);
       vkCmdSetCullMode(cmd, d.cull_back ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE);
       // A mirroring transform turns the winding around.
       const bool mirrored = glm::determinant(glm::mat3(d.model)) < 0.0f;
@@ -257,6 +281,33 @@ public:
   }
 
 private:
+  /// Picks each surface's pipeline variant (its features; with layers, everything the surfaces
+  /// behind it may need; the debug view and Fresnel mode) and builds the ones not built yet.
+  /// A few variants exist in practice; each is built once (a shader compile on lavapipe).
+  Result<void> make_variants() {
+    std::uint32_t all = 0;
+    for (const Drawn& d : drawn_) {
+      all |= features_of(d.record);
+    }
+    const bool layered = drawn_.size() > 1 && params_.max_layers > 1;
+    const std::uint32_t modes = static_cast<std::uint32_t>(params_.debug_view) << 8 |
+                                static_cast<std::uint32_t>(params_.fresnel) << 12;
+    for (Drawn& d : drawn_) {
+      const std::uint32_t features = layered ? (all | kLayers) : features_of(d.record);
+      d.variant = features | modes;
+      if (pipelines_.count(d.variant) != 0) {
+        continue;
+      }
+      GraphicsPipelineDesc desc = pipeline_desc_;
+      desc.constants = {features, static_cast<std::uint32_t>(params_.debug_view),
+                        params_.fresnel == GlassFresnel::exact ? 1u : 0u};
+      Pipeline pipeline;
+      SNELL_ASSIGN_OR_RETURN(pipeline, Pipeline::create(*ctx_, desc));
+      pipelines_.emplace(d.variant, std::move(pipeline));
+    }
+    return {};
+  }
+
   /// Uploads the scene's transmissive objects (transmission > 0) once.
   Result<void> take_scene_objects() {
     auto taken =
@@ -315,7 +366,7 @@ private:
     const glm::vec3 facing = glm::dot(p.normal, p.normal) > 1e-12f ? p.normal : toward_eye;
     const glm::vec3 n =
         glm::dot(facing, facing) > 1e-12f ? glm::normalize(facing) : glm::vec3(0.0f, 0.0f, 1.0f);
-    // Its height runs along world up projected into the plane (world +Z when it faces up/down).
+    // Its height runs along world up projected into the plane (world -Z when it faces up/down).
     glm::vec3 up = glm::vec3(0.0f, 1.0f, 0.0f) - n * n.y;
     if (glm::dot(up, up) < 1e-6f) {
       up = glm::vec3(0.0f, 0.0f, -1.0f) - n * -n.z;
@@ -460,7 +511,8 @@ private:
   UniformRing ubo_;
   UniformRing draws_; ///< One DrawBlock per surface drawn.
   DescriptorSets sets_;
-  Pipeline pipeline_;
+  GraphicsPipelineDesc pipeline_desc_;          ///< The surface pipeline, unspecialised.
+  std::map<std::uint32_t, Pipeline> pipelines_; ///< Built variants by key (Drawn::variant).
   Surfaces pane_, scene_surfaces_;
   std::vector<DebugTarget> debug_;
 };

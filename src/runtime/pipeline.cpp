@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace snell {
 
@@ -29,13 +30,22 @@ Result<VkShaderModule> create_shader_module(VkDevice device, Span<const std::uin
 
 Result<VkPipeline> create_graphics_pipeline(VkDevice device, VkShaderModule vertex,
                                             VkShaderModule fragment, VkPipelineLayout layout,
-                                            const RasterState& desc, std::string_view name) {
+                                            const RasterState& desc, std::string_view name,
+                                            Span<const std::uint32_t> constants) {
+  // constant_id i = constants[i], 4 bytes each, for both stages.
+  std::vector<VkSpecializationMapEntry> entries(constants.size());
+  for (std::size_t i = 0; i < constants.size(); ++i) {
+    entries[i] = {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(4 * i), 4};
+  }
+  const VkSpecializationInfo specialization{static_cast<std::uint32_t>(entries.size()),
+                                            entries.data(), 4 * constants.size(), constants.data()};
   VkPipelineShaderStageCreateInfo stages[2];
   stages[0] =
       vk_init<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
   stages[0].module = vertex;
   stages[0].pName = "main";
+  stages[0].pSpecializationInfo = constants.empty() ? nullptr : &specialization;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = fragment;
@@ -179,7 +189,8 @@ Result<Pipeline> Pipeline::create(const Context& ctx, const GraphicsPipelineDesc
     return frag.error();
   }
   scope.modules[1] = *frag;
-  auto pipeline = create_graphics_pipeline(device, *vert, *frag, p.layout_, desc.state, label);
+  auto pipeline =
+      create_graphics_pipeline(device, *vert, *frag, p.layout_, desc.state, label, desc.constants);
   if (!pipeline) {
     return pipeline.error();
   }

@@ -76,7 +76,7 @@ Crossing cross_surface(GlassSurface s, vec3 p, vec3 n, vec3 v, float ior, vec4 t
   vec3 absorb = vec3(1.0);
   c.exit = p;
   c.dir = v;
-  if (thickness > 0.0) {
+  if (has(kShift) && thickness > 0.0) {
     float cos_t = max(-dot(n, t), 1e-4);
     float path;
     if (s.axis_u.w > 0.5) {
@@ -96,7 +96,7 @@ Crossing cross_surface(GlassSurface s, vec3 p, vec3 n, vec3 v, float ior, vec4 t
     }
     absorb = pow(s.attenuation.rgb, vec3(path / s.attenuation.a));
   }
-  c.fresnel = draw.index.w == 0u ? fresnel_dielectric(cos_i, eta) : 0.0;
+  c.fresnel = kFresnelExact != 0u ? fresnel_dielectric(cos_i, eta) : 0.0;
   vec3 r = reflect(v, n);
   float highlight = pow(max(dot(r, -glass.light_dir.xyz), 0.0), glass.light_color.w);
   c.reflected = sky_gradient(r, glass.sky_zenith.rgb, glass.sky_horizon.rgb, glass.sky_ground.rgb) +
@@ -109,7 +109,7 @@ Crossing cross_surface(GlassSurface s, vec3 p, vec3 n, vec3 v, float ior, vec4 t
   float f = c.fresnel;
   c.add = f * c.reflected + (1.0 - f) * (1.0 - transmission) * diffuse;
   c.mul = (1.0 - f) * transmission * c.transmit;
-  if (tex.a > 0.0) { // seed 003: lerp(refraction, colour texture, color_blend)
+  if ((has(kTextured) || has(kLayers)) && tex.a > 0.0) { // seed 003: lerp(refraction, colour texture, color_blend)
     float blend = s.params.z;
     c.add = mix(c.add, tex.rgb, blend);
     c.mul *= 1.0 - blend;
@@ -151,13 +151,13 @@ bool hit_slab(int j, vec3 o, vec3 d, out float s, out vec3 face_n, out vec2 loca
 
 // Colour texture of a textured pane at texture coordinate `uv` (a = 0 when untextured).
 vec4 pane_texture(GlassSurface s, vec2 uv) {
-  return s.params.w > 0.0 ? vec4(texture(color_map, uv * s.params.w).rgb, 1.0) : vec4(0.0);
+  return (has(kTextured) || has(kLayers)) && s.params.w > 0.0 ? vec4(texture(color_map, uv * s.params.w).rgb, 1.0) : vec4(0.0);
 }
 
 // The light reaching the eye through this fragment for refractive index `ior` (one call per
 // channel with dispersion).
 vec3 radiance(GlassSurface s, vec3 n, vec3 v, float ior, vec2 offset, vec4 tex, vec2 uv0) {
-  int debug_view = int(draw.view.x);
+  const int debug_view = int(kDebugView);
   Crossing first = cross_surface(s, in_world, n, v, ior, tex);
   if (debug_view == kDebugReflection) {
     return first.reflected;
@@ -167,68 +167,72 @@ vec3 radiance(GlassSurface s, vec3 n, vec3 v, float ior, vec2 offset, vec4 tex, 
   }
   vec3 accum = debug_view == kDebugTransmission ? vec3(0.0) : first.add;
   vec3 through = debug_view == kDebugTransmission ? first.transmit : first.mul;
-  float lod = blur_level(s.normal.w, ior);
+  float lod = has(kRough) ? blur_level(s.normal.w, ior) : 0.0;
 
-  // Unshifted: what the pixel itself shows behind the surface (always behind it: the surface
-  // passed the depth test against it). The fallback when a shifted lookup finds an occluder.
-  bool sky0;
-  vec3 w0 = background_point(uv0, sky0);
-  vec3 o = first.exit;
-  vec3 d = first.dir;
-  float s_hit = sky0 ? 1e6 : dot(w0 - o, d);
   vec2 uv = uv0;
-  // The cheapest lookup is the one not made: a ray that leaves where it entered (thin-walled)
-  // or moved less than a quarter pixel on screen sees the pixel itself.
-  vec2 moved = (screen_uv(o + d * max(s_hit, 0.0)) - uv0) * glass.extent.xy;
-  if (dot(moved, moved) > 0.0625) {
-    uv = trace_background(o, d, max(s_hit, 0.0), s_hit);
-    if (s_hit < 0.0) {
-      uv = uv0;
-      s_hit = sky0 ? 1e6 : dot(w0 - o, d);
-    }
-  }
-
-  // Slabs behind this one, nearest first, up to max_layers surfaces in all.
-  int current = int(draw.index.x);
-  int count = int(draw.index.y);
-  for (uint layer = 1u; layer < draw.index.z; ++layer) {
-    int best = -1;
-    float best_s = s_hit;
-    vec3 best_n = vec3(0.0);
-    vec2 best_local = vec2(0.0);
-    for (int j = 0; j < count; ++j) {
-      float sj;
-      vec3 nj;
-      vec2 lj;
-      if (j != current && hit_slab(j, o, d, sj, nj, lj) && sj < best_s) {
-        best = j;
-        best_s = sj;
-        best_n = nj;
-        best_local = lj;
+  if (has(kShift) || has(kLayers)) {
+    // Unshifted: what the pixel itself shows behind the surface (always behind it: the surface
+    // passed the depth test against it). The fallback when a shifted lookup finds an occluder.
+    bool sky0;
+    vec3 w0 = background_point(uv0, sky0);
+    vec3 o = first.exit;
+    vec3 d = first.dir;
+    float s_hit = sky0 ? 1e6 : dot(w0 - o, d);
+    // The cheapest lookup is the one not made: a ray that moved less than a quarter pixel on
+    // screen sees the pixel itself.
+    vec2 moved = (screen_uv(o + d * max(s_hit, 0.0)) - uv0) * glass.extent.xy;
+    if (has(kShift) && dot(moved, moved) > 0.0625) {
+      uv = trace_background(o, d, max(s_hit, 0.0), s_hit);
+      if (s_hit < 0.0) {
+        uv = uv0;
+        s_hit = sky0 ? 1e6 : dot(w0 - o, d);
       }
     }
-    if (best < 0) {
-      break;
-    }
-    GlassSurface g = glass.surfaces[best];
-    vec2 g_uv = vec2(best_local.x * 0.5 + 0.5, 0.5 - best_local.y * 0.5);
-    Crossing c = cross_surface(g, o + d * best_s, best_n, d, g.axis_v.w, pane_texture(g, g_uv));
-    accum += through * c.add;
-    through *= c.mul;
-    lod = max(lod, blur_level(g.normal.w, g.axis_v.w));
-    float before = s_hit - best_s;
-    o = c.exit;
-    d = c.dir;
-    current = best;
-    uv = trace_background(o, d, max(before, 0.0), s_hit);
-    if (s_hit < 0.0) {
-      s_hit = 0.0; // an occluder inside the stack: keep the last lookup
+
+    // Slabs behind this one, nearest first, up to max_layers surfaces in all.
+    if (has(kLayers)) {
+      int current = int(draw.index.x);
+      int count = int(draw.index.y);
+      for (uint layer = 1u; layer < draw.index.z; ++layer) {
+        int best = -1;
+        float best_s = s_hit;
+        vec3 best_n = vec3(0.0);
+        vec2 best_local = vec2(0.0);
+        for (int j = 0; j < count; ++j) {
+          float sj;
+          vec3 nj;
+          vec2 lj;
+          if (j != current && hit_slab(j, o, d, sj, nj, lj) && sj < best_s) {
+            best = j;
+            best_s = sj;
+            best_n = nj;
+            best_local = lj;
+          }
+        }
+        if (best < 0) {
+          break;
+        }
+        GlassSurface g = glass.surfaces[best];
+        vec2 g_uv = vec2(best_local.x * 0.5 + 0.5, 0.5 - best_local.y * 0.5);
+        Crossing c = cross_surface(g, o + d * best_s, best_n, d, g.axis_v.w, pane_texture(g, g_uv));
+        accum += through * c.add;
+        through *= c.mul;
+        lod = max(lod, blur_level(g.normal.w, g.axis_v.w));
+        float before = s_hit - best_s;
+        o = c.exit;
+        d = c.dir;
+        current = best;
+        uv = trace_background(o, d, max(before, 0.0), s_hit);
+        if (s_hit < 0.0) {
+          s_hit = 0.0; // an occluder inside the stack: keep the last lookup
+        }
+      }
     }
   }
 
   // The seed's normal-map offset, unless it lands on something in front of the surface.
   vec2 uv_final = uv;
-  if (offset != vec2(0.0)) {
+  if (has(kTextured) && offset != vec2(0.0)) {
     uv_final += offset;
     bool sky_f;
     vec3 wf = background_point(clamp(uv_final, 0.0, 1.0), sky_f);
@@ -239,12 +243,15 @@ vec3 radiance(GlassSurface s, vec3 n, vec3 v, float ior, vec2 offset, vec4 tex, 
   if (debug_view == kDebugOffset) {
     return vec3(0.5 + 10.0 * (uv_final - uv0), 0.5);
   }
-  vec3 behind = textureLod(background, clamp(uv_final, 0.0, 1.0), min(lod, glass.ambient.w)).rgb;
+  vec2 at = clamp(uv_final, 0.0, 1.0);
+  // A constant level 0 keeps llvmpipe on its fast path when nothing is blurred.
+  vec3 behind = has(kRough) ? textureLod(background, at, min(lod, glass.ambient.w)).rgb
+                            : textureLod(background, at, 0.0).rgb;
   return accum + through * behind;
 }
 
 void main() {
-  GlassSurface s = glass.surfaces[draw.index.x];
+  GlassSurface s = draw.self;
   vec3 v = normalize(in_world - glass.eye.xyz);
   vec3 n = normalize(in_normal);
   if (dot(n, v) > 0.0) {
@@ -253,14 +260,14 @@ void main() {
   vec2 uv0 = gl_FragCoord.xy * glass.extent.zw;
   vec2 offset = vec2(0.0);
   vec4 tex = vec4(0.0);
-  if (s.params.w > 0.0) {
+  if (has(kTextured) && s.params.w > 0.0) {
     vec3 bump = texture(normal_map, in_uv * s.params.w).xyz * 2.0 - 1.0;
     offset = bump.xy * s.params.y;
     tex = pane_texture(s, in_uv);
   }
   float ior = s.axis_v.w;
   vec3 color;
-  if (s.params.x > 0.0) {
+  if (has(kDispersion) && s.params.x > 0.0) {
     // KHR_materials_dispersion: red below, blue above the base IOR.
     float half_spread = (ior - 1.0) * 0.025 * s.params.x;
     color.r = radiance(s, n, v, ior - half_spread, offset, tex, uv0).r;

@@ -37,11 +37,30 @@ layout(set = 0, binding = 0, std140) uniform GlassBlock {
 // constants into uniform block 0 and specialises (recompiles) a shader for the values of block-0
 // data that steer its branches and loops, whenever they change: with the loop bounds and
 // switches below as push constants a glass frame cost ~60 ms more at 1280x720 (measured).
+// Pipeline variants: the effect builds one pipeline per combination of these it draws, and the
+// branches on them are removed at pipeline creation. On lavapipe every branch of a shader costs
+// whether it is taken or not (SIMD lanes under masks), so a clear thin pane must not pay for
+// slabs, layers, textures, blur and dispersion it does not use. The defaults enable everything.
+layout(constant_id = 0) const uint kFeatures = 0x1Fu;
+layout(constant_id = 1) const uint kDebugView = 0u;    // GlassDebugView
+layout(constant_id = 2) const uint kFresnelExact = 1u; // 0: fresnel = none
+const uint kShift = 1u;      // some surface has a volume (thickness > 0)
+const uint kLayers = 2u;     // rays may cross other surfaces (more than one, max_layers > 1)
+const uint kTextured = 4u;   // a normal-map offset or colour texture
+const uint kRough = 8u;      // blurred background levels
+const uint kDispersion = 16u; // per-channel IOR
+
+bool has(uint feature) {
+  return (kFeatures & feature) != 0u;
+}
+
 layout(set = 0, binding = 5, std140) uniform GlassDraw {
   mat4 model;   // object to world
   uvec4 index;  // x index into glass.surfaces, y number of surfaces, z layers (max_layers; 1
-                // when the surface is alone), w fresnel (0 exact, 1 none)
-  uvec4 view;   // x debug view (GlassDebugView)
+                // when the surface is alone), w unused
+  // This draw's own surface, a copy of glass.surfaces[index.x]: read at constant offsets, which
+  // llvmpipe loads once per draw instead of gathering per pixel as it does for a dynamic index.
+  GlassSurface self;
 } draw;
 
 layout(set = 0, binding = 1) uniform sampler2D background;       // opaque colour (mips)

@@ -57,8 +57,10 @@ struct GlassParams {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   /// Thickness of the pane, m: a solid slab centred on `center`; light leaves it parallel to
   /// where it came from, shifted sideways by thickness * sin(ti - tt) / cos(tt). 0 =
-  /// thin-walled (no shift). Default 0.01 (float glass). [0, 100].
-  float thickness = 0.01f;
+  /// thin-walled (no shift), as glTF treats a transmissive material without a volume. Default 0
+  /// (a 1 cm window shifts the view by under a pixel at a few metres, and the thin path is
+  /// the cheapest). [0, 100].
+  float thickness = 0.0f;
   /// Index of refraction (the eye is in air, n = 1). Default 1.5 (glass). [1, 3].
   float ior = 1.5f;
   /// KHR_materials_dispersion's 20 / Abbe number: per-channel IOR (red lower, blue higher,
