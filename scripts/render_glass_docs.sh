@@ -12,32 +12,10 @@
 # chooses). The pictures in the repository were rendered on lavapipe.
 set -euo pipefail
 
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-repo_root="$(pwd)"
-snell="${SNELL:-$repo_root/build/default/samples/cli/snell}"
+# shellcheck source=scripts/docs_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/docs_lib.sh" "$@"
 doc="$repo_root/docs/glass.md"
 out_dir="$repo_root/docs/images/glass"
-
-mode=render
-case "${1:-}" in
-  "") ;;
-  --check-table) mode=check ;;
-  -h | --help)
-    sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
-    exit 0
-    ;;
-  *)
-    echo "render_glass_docs.sh: unknown argument '$1' (use --check-table or nothing)" >&2
-    exit 2
-    ;;
-esac
-
-if [[ ! -x "$snell" ]]; then
-  echo "render_glass_docs.sh: the snell CLI is missing or not executable: $snell" >&2
-  echo "  build it: cmake --preset default && cmake --build --preset default --target snell" >&2
-  echo "  (or point SNELL at a built snell binary)" >&2
-  exit 1
-fi
 
 # ==== --check-table ==============================================================================
 # Every glass (ice) parameter printed by `snell list` must have a row in the table between

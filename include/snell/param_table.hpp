@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -207,6 +208,12 @@ public:
     return {};
   }
 
+  /// True when `key` is an action (declared with action()), false otherwise (also unknown).
+  [[nodiscard]] bool is_action(std::string_view key) const {
+    const std::size_t i = index_of(key);
+    return i < entries_.size() && !entries_[i].get;
+  }
+
 private:
   /// How one parameter is read from and written to P. `get` is empty for actions; `set` runs
   /// only after the value passed validate_param.
@@ -254,6 +261,65 @@ private:
   P defaults_; ///< The values the schema reports as defaults.
   ParamSchema schema_;
   std::vector<Entry> entries_; ///< Parallel to schema_.params.
+};
+
+/// An effect's current parameters kept with their table: what Effect::set_param, get_param and a
+/// typed set_params need, so a plugin writes none of it. It remembers the last choice of every
+/// action (get reads a preset back), and lets the effect refuse a change it cannot apply (a
+/// texture that does not load) before anything is stored.
+template <class P> class ParamStore {
+public:
+  /// `table` must outlive the store (a function-local static does); `initial` is the starting
+  /// value (e.g. the table's defaults adjusted from the scene).
+  ParamStore(const ParamTable<P>& table, P initial) : table_(&table), value_(std::move(initial)) {}
+
+  /// The current parameters.
+  [[nodiscard]] const P& value() const { return value_; }
+  /// Mutable access for an effect's own adjustments that need no validation (e.g. from its
+  /// scene at creation).
+  [[nodiscard]] P& value() { return value_; }
+
+  /// Sets `key` (ParamTable::set on a copy), then calls `commit(next)`, which returns
+  /// Result<void> and may refuse; only then stores the copy (and an action's choice). Nothing
+  /// changes on any error.
+  template <class Commit>
+  [[nodiscard]] Result<void> set(std::string_view key, const ParamValue& value, Commit&& commit) {
+    P next = value_;
+    if (auto r = table_->set(next, key, value); !r) {
+      return r;
+    }
+    if (auto r = commit(static_cast<const P&>(next)); !r) {
+      return r;
+    }
+    value_ = std::move(next);
+    if (table_->is_action(key)) {
+      choices_[std::string(key)] = std::get<std::string>(value);
+    }
+    return {};
+  }
+  /// Validates all of `next` (ParamTable::validate), then `commit(next)`, then stores it.
+  template <class Commit> [[nodiscard]] Result<void> set_all(const P& next, Commit&& commit) {
+    if (auto r = table_->validate(next); !r) {
+      return r;
+    }
+    if (auto r = commit(next); !r) {
+      return r;
+    }
+    value_ = next;
+    return {};
+  }
+  /// The value of `key`; an action reads back its last choice (its default before any).
+  [[nodiscard]] Result<ParamValue> get(std::string_view key) const {
+    if (const auto it = choices_.find(key); it != choices_.end()) {
+      return ParamValue{it->second};
+    }
+    return table_->get(value_, key);
+  }
+
+private:
+  const ParamTable<P>* table_;
+  P value_;
+  std::map<std::string, std::string, std::less<>> choices_; ///< Last choice per action.
 };
 
 } // namespace snell

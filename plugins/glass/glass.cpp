@@ -54,6 +54,7 @@ struct Drawn {
   float distance = 0.0f;     ///< From the eye to its centre (drawn farthest first).
   Aabb bounds{};             ///< World bounds, grown by its thickness.
   std::uint32_t variant = 0; ///< Key of its pipeline in Glass::pipelines_.
+  VkRect2D screen{};         ///< The pixels it may cover or sample (bounds on screen).
 };
 
 /// Feature bits of the shader's kFeatures specialization constant (glass_common.glsl).
@@ -64,6 +65,15 @@ enum Feature : std::uint32_t {
   kRough = 8u,
   kDispersion = 16u,
 };
+
+/// True when two pixel rectangles share a pixel.
+bool overlaps(const VkRect2D& a, const VkRect2D& b) {
+  const auto end = [](std::int32_t o, std::uint32_t e) { return std::int64_t{o} + e; };
+  return a.offset.x < end(b.offset.x, b.extent.width) &&
+         b.offset.x < end(a.offset.x, a.extent.width) &&
+         a.offset.y < end(b.offset.y, b.extent.height) &&
+         b.offset.y < end(a.offset.y, a.extent.height);
+}
 
 /// The features one surface needs alone.
 std::uint32_t features_of(const SurfaceRecord& r) {
@@ -87,7 +97,8 @@ float thickness_scale(const glm::mat4& model, glm::vec3 n) {
 class Glass final : public GlassEffect {
 public:
   explicit Glass(GlassKind kind)
-      : kind_(kind), params_(kind == GlassKind::ice ? ice_defaults() : GlassParams{}) {}
+      : kind_(kind), params_(detail::glass_table(kind),
+                             kind == GlassKind::ice ? ice_defaults() : GlassParams{}) {}
 
   Result<void> init(const EffectCreateInfo& info) {
     ctx_ = info.context;
@@ -97,35 +108,30 @@ public:
     if (scene_ != nullptr) {
       SNELL_TRY(take_scene_objects());
       if (const Anchor* a = scene_->find_anchor("window")) {
-        params_.center = a->position;
-        params_.size = glm::max(glm::vec2(a->size.x, a->size.y), glm::vec2(0.01f));
+        params_.value().center = a->position;
+        params_.value().size = glm::max(glm::vec2(a->size.x, a->size.y), glm::vec2(0.01f));
       } else if (!scene_surfaces_.empty()) {
-        params_.pane = false; // a glTF scene with glass of its own needs no extra pane
+        params_.value().pane = false; // a glTF scene with glass of its own needs no extra pane
       }
     }
     SNELL_ASSIGN_OR_RETURN(normal_map_, load_texture("normal_map", "", false));
     SNELL_ASSIGN_OR_RETURN(color_map_, load_texture("color_texture", "", true));
-    SNELL_ASSIGN_OR_RETURN(ubo_, UniformRing::create(*ctx_, {.block_size = sizeof(GlassBlock),
-                                                             .frames_in_flight = frames_in_flight_,
-                                                             .label = "glass uniforms"}));
     SNELL_ASSIGN_OR_RETURN(draws_,
                            UniformRing::create(*ctx_, {.block_size = sizeof(DrawBlock),
                                                        .blocks_per_frame = kMaxSurfaces,
                                                        .frames_in_flight = frames_in_flight_,
                                                        .label = "glass draw uniforms"}));
-    constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    DescriptorSetDesc sd;
-    sd.bindings = {
-        {.binding = kUniforms, .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, .stages = kBoth},
-        {.binding = kBackground},
-        {.binding = kBackgroundDepth},
-        {.binding = kNormals},
-        {.binding = kColors},
-        {.binding = kDraw, .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, .stages = kBoth}};
-    sd.frames_in_flight = frames_in_flight_;
-    sd.label = "glass descriptors";
-    SNELL_ASSIGN_OR_RETURN(sets_, DescriptorSets::create(*ctx_, sd));
-    sets_.set_buffer(kUniforms, ubo_.buffer(), 0, ubo_.block_size());
+    // Binding 0 the frame's GlassBlock, 1..4 the images, 5 this draw's DrawBlock.
+    SNELL_TRY(create_surface_bindings(
+        *ctx_,
+        {.block_size = sizeof(GlassBlock),
+         .images = 4,
+         .extra = {{.binding = kDraw,
+                    .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                    .stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}},
+         .frames_in_flight = frames_in_flight_,
+         .label = "glass surfaces"},
+        ubo_, sets_));
     sets_.set_buffer(kDraw, draws_.buffer(), 0, draws_.block_size());
     const VkSampler repeat = ctx_->sampler(StandardSampler::linear_repeat);
     sets_.set_image(kNormals, normal_map_.view(), repeat);
@@ -140,30 +146,17 @@ public:
   std::string_view type() const override { return kind_ == GlassKind::ice ? "ice" : "glass"; }
 
   Result<void> set_param(std::string_view key, const ParamValue& value) override {
-    GlassParams next = params_;
-    SNELL_TRY(detail::apply_glass_param(kind_, next, key, value));
-    SNELL_TRY(apply_textures(next));
-    params_ = next;
-    if (key == "preset") {
-      preset_ = std::get<std::string>(value);
-    }
-    return {};
+    return params_.set(key, value,
+                       [this](const GlassParams& next) { return apply_textures(next); });
   }
-  Result<ParamValue> get_param(std::string_view key) const override {
-    if (key == "preset") {
-      return ParamValue{preset_}; // the last preset applied
-    }
-    return detail::read_glass_param(kind_, params_, key);
-  }
+  Result<ParamValue> get_param(std::string_view key) const override { return params_.get(key); }
   Result<void> set_params(const GlassParams& params) override {
-    SNELL_TRY(detail::validate_glass_params(kind_, params));
-    SNELL_TRY(apply_textures(params));
-    params_ = params;
-    return {};
+    return params_.set_all(params,
+                           [this](const GlassParams& next) { return apply_textures(next); });
   }
-  const GlassParams& params() const override { return params_; }
+  const GlassParams& params() const override { return params_.value(); }
   std::size_t surface_count() const override {
-    return (params_.pane ? 1u : 0u) + scene_surfaces_.size();
+    return (params_.value().pane ? 1u : 0u) + scene_surfaces_.size();
   }
   Span<const DebugTarget> debug_targets() const override { return debug_; }
   bool wants_snapshot() const override { return !drawn_.empty(); }
@@ -228,7 +221,7 @@ public:
       sets_.set_image(kBackgroundDepth, own_.target().depth_view(), nearest);
       levels = own_.target().mip_levels();
     }
-    const GlassParams& p = params_;
+    const GlassParams& p = params_.value();
     b.eye = glm::vec4(main.eye, 0.0f);
     const VkExtent2D e = main.extent;
     b.extent =
@@ -285,22 +278,26 @@ private:
   /// behind it may need; the debug view and Fresnel mode) and builds the ones not built yet.
   /// A few variants exist in practice; each is built once (a shader compile on lavapipe).
   Result<void> make_variants() {
-    std::uint32_t all = 0;
-    for (const Drawn& d : drawn_) {
-      all |= features_of(d.record);
-    }
-    const bool layered = drawn_.size() > 1 && params_.max_layers > 1;
-    const std::uint32_t modes = static_cast<std::uint32_t>(params_.debug_view) << 8 |
-                                static_cast<std::uint32_t>(params_.fresnel) << 12;
+    const bool layered = drawn_.size() > 1 && params_.value().max_layers > 1;
+    const std::uint32_t modes = static_cast<std::uint32_t>(params_.value().debug_view) << 8 |
+                                static_cast<std::uint32_t>(params_.value().fresnel) << 12;
     for (Drawn& d : drawn_) {
-      const std::uint32_t features = layered ? (all | kLayers) : features_of(d.record);
+      std::uint32_t features = features_of(d.record);
+      // Tracing only where a flat surface may stand behind this one on screen, and only with
+      // what those surfaces need (dispersion applies at the first surface alone).
+      for (const Drawn& other : drawn_) {
+        if (layered && &other != &d && other.record.axis_u.w > 0.5f &&
+            overlaps(d.screen, other.screen)) {
+          features |= kLayers | (features_of(other.record) & ~std::uint32_t{kDispersion});
+        }
+      }
       d.variant = features | modes;
       if (pipelines_.count(d.variant) != 0) {
         continue;
       }
       GraphicsPipelineDesc desc = pipeline_desc_;
-      desc.constants = {features, static_cast<std::uint32_t>(params_.debug_view),
-                        params_.fresnel == GlassFresnel::exact ? 1u : 0u};
+      desc.constants = {features, static_cast<std::uint32_t>(params_.value().debug_view),
+                        params_.value().fresnel == GlassFresnel::exact ? 1u : 0u};
       Pipeline pipeline;
       SNELL_ASSIGN_OR_RETURN(pipeline, Pipeline::create(*ctx_, desc));
       pipelines_.emplace(d.variant, std::move(pipeline));
@@ -332,7 +329,7 @@ private:
     drawn_.clear();
     rough_ = false;
     const glm::vec3 eye = info.main_view.eye;
-    if (params_.pane) {
+    if (params_.value().pane) {
       drawn_.push_back(pane_surface(eye));
     }
     for (std::size_t i = 0; i < scene_surfaces_.size(); ++i) {
@@ -344,7 +341,7 @@ private:
     const glm::mat4 vp = info.main_view.proj * info.main_view.view;
     const VkExtent2D extent = info.main_view.extent;
     const glm::vec2 size(static_cast<float>(extent.width), static_cast<float>(extent.height));
-    for (const Drawn& d : drawn_) {
+    for (Drawn& d : drawn_) {
       const float roughness = d.record.normal.w;
       rough_ = rough_ || roughness > 0.0f;
       // A lookup at level L reads texels of levels L and L + 1, up to 1.5 texels of the
@@ -352,7 +349,8 @@ private:
       const float level = roughness * std::log2(std::max(size.x, size.y));
       const float blur = roughness > 0.0f ? 2.0f * std::exp2(std::ceil(level)) : 0.0f;
       const glm::vec2 margin = d.record.params.y * size + blur + 2.0f;
-      region_ = rect_union(region_, screen_rect(vp, d.bounds, extent, margin));
+      d.screen = screen_rect(vp, d.bounds, extent, margin);
+      region_ = rect_union(region_, d.screen);
     }
     if (drawn_.empty()) {
       region_ = VkRect2D{{0, 0}, {1, 1}};
@@ -361,7 +359,7 @@ private:
 
   /// The pane: the unit quad on the slab's face toward the eye.
   Drawn pane_surface(glm::vec3 eye) const {
-    const GlassParams& p = params_;
+    const GlassParams& p = params_.value();
     const glm::vec3 toward_eye = eye - p.center;
     const glm::vec3 facing = glm::dot(p.normal, p.normal) > 1e-12f ? p.normal : toward_eye;
     const glm::vec3 n =
@@ -471,8 +469,8 @@ private:
   /// Loads the textures whose paths changed; on any error nothing changes (both are loaded
   /// before either is swapped in). Replaced ones are destroyed past the frames in flight.
   Result<void> apply_textures(const GlassParams& next) {
-    const bool new_normals = next.normal_map != params_.normal_map;
-    const bool new_colors = next.color_texture != params_.color_texture;
+    const bool new_normals = next.normal_map != params_.value().normal_map;
+    const bool new_colors = next.color_texture != params_.value().color_texture;
     Texture2D normals, colors;
     if (new_normals) {
       SNELL_ASSIGN_OR_RETURN(normals, load_texture("normal_map", next.normal_map, false));
@@ -499,8 +497,7 @@ private:
   const Scene* scene_ = nullptr;
   std::uint32_t frames_in_flight_ = 2;
   DeferredRelease release_;
-  GlassParams params_;
-  std::string preset_ = "default";
+  ParamStore<GlassParams> params_;
   std::uint64_t frame_ = 0;
   bool use_snapshot_ = false;
   bool rough_ = false; ///< Some surface samples blurred levels this frame.

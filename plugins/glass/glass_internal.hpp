@@ -3,6 +3,7 @@
 #pragma once
 
 #include <snell/glass.hpp>
+#include <snell/param_table.hpp>
 #include <snell/scene.hpp>
 
 #include <cstdint>
@@ -14,14 +15,8 @@ enum class GlassKind : std::uint8_t { glass, ice };
 
 namespace detail {
 
-/// Validates `value` against `kind`'s schema and stores it in `p` (unchanged on error; the
-/// whole preset for "preset").
-Result<void> apply_glass_param(GlassKind kind, GlassParams& p, std::string_view key,
-                               const ParamValue& value);
-/// The current value of `key` in `p`.
-Result<ParamValue> read_glass_param(GlassKind kind, const GlassParams& p, std::string_view key);
-/// Validates every field of `p` (ranges, non-finite values).
-Result<void> validate_glass_params(GlassKind kind, const GlassParams& p);
+/// The parameter table of `kind` (schema, set, get, validation; its own defaults and preset).
+const ParamTable<GlassParams>& glass_table(GlassKind kind);
 
 /// The built-in tangent-space normal map of `kind` (glass: gentle low-frequency waviness; ice:
 /// frost facets), RGBA8 linear, tileable, `size` x `size`.

@@ -118,22 +118,8 @@ const ParamSchema& ice_schema() {
 
 namespace detail {
 
-Result<void> apply_glass_param(GlassKind kind, GlassParams& p, std::string_view key,
-                               const ParamValue& value) {
-  GlassParams next = p;
-  if (auto r = table(kind).set(next, key, value); !r) {
-    return r;
-  }
-  p = next;
-  return {};
-}
-
-Result<ParamValue> read_glass_param(GlassKind kind, const GlassParams& p, std::string_view key) {
-  return table(kind).get(p, key);
-}
-
-Result<void> validate_glass_params(GlassKind kind, const GlassParams& p) {
-  return table(kind).validate(p);
+const ParamTable<GlassParams>& glass_table(GlassKind kind) {
+  return table(kind);
 }
 
 } // namespace detail

@@ -36,27 +36,19 @@ public:
     release_ = DeferredRelease(info.frames_in_flight);
     if (info.scene != nullptr) {
       if (const Anchor* a = info.scene->find_anchor("water")) {
-        params_.height = a->position.y;
-        params_.center = glm::vec2(a->position.x, a->position.z);
-        params_.size = glm::max(glm::vec2(a->size.x, a->size.z), glm::vec2(0.01f));
+        params_.value().height = a->position.y;
+        params_.value().center = glm::vec2(a->position.x, a->position.z);
+        params_.value().size = glm::max(glm::vec2(a->size.x, a->size.z), glm::vec2(0.01f));
       }
     }
     SNELL_ASSIGN_OR_RETURN(normal_map_, load_normal_map(""));
-    SNELL_ASSIGN_OR_RETURN(ubo_, UniformRing::create(*ctx_, {.block_size = sizeof(WaterBlock),
-                                                             .frames_in_flight = frames_in_flight_,
-                                                             .label = "water uniforms"}));
-    constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    DescriptorSetDesc sd;
-    sd.bindings = {
-        {.binding = kUniforms, .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, .stages = kBoth},
-        {.binding = kReflection},
-        {.binding = kRefraction},
-        {.binding = kRefractionDepth},
-        {.binding = kNormals}};
-    sd.frames_in_flight = frames_in_flight_;
-    sd.label = "water descriptors";
-    SNELL_ASSIGN_OR_RETURN(sets_, DescriptorSets::create(*ctx_, sd));
-    sets_.set_buffer(kUniforms, ubo_.buffer(), 0, ubo_.block_size());
+    // Binding 0 the WaterBlock, 1..4 reflection, refraction, refraction depth, normal map.
+    SNELL_TRY(create_surface_bindings(*ctx_,
+                                      {.block_size = sizeof(WaterBlock),
+                                       .images = 4,
+                                       .frames_in_flight = frames_in_flight_,
+                                       .label = "water surface"},
+                                      ubo_, sets_));
     sets_.set_image(kNormals, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
     SNELL_ASSIGN_OR_RETURN(
         pipeline_,
@@ -71,39 +63,18 @@ public:
   std::string_view type() const override { return "water"; }
 
   Result<void> set_param(std::string_view key, const ParamValue& value) override {
-    WaterParams next = params_;
-    if (auto r = detail::apply_water_param(next, key, value); !r) {
-      return r;
-    }
-    if (auto r = apply_normal_map(next.normal_map); !r) {
-      return r;
-    }
-    params_ = next;
-    if (key == "preset") {
-      preset_ = std::get<std::string>(value);
-    }
-    return {};
+    return params_.set(
+        key, value, [this](const WaterParams& next) { return apply_normal_map(next.normal_map); });
   }
-  Result<ParamValue> get_param(std::string_view key) const override {
-    if (key == "preset") {
-      return ParamValue{preset_}; // the last preset applied
-    }
-    return detail::read_water_param(params_, key);
-  }
+  Result<ParamValue> get_param(std::string_view key) const override { return params_.get(key); }
   Result<void> set_params(const WaterParams& params) override {
-    if (auto r = detail::validate_water_params(params); !r) {
-      return r;
-    }
-    if (auto r = apply_normal_map(params.normal_map); !r) {
-      return r;
-    }
-    params_ = params;
-    return {};
+    return params_.set_all(
+        params, [this](const WaterParams& next) { return apply_normal_map(next.normal_map); });
   }
-  const WaterParams& params() const override { return params_; }
+  const WaterParams& params() const override { return params_.value(); }
   Span<const DebugTarget> debug_targets() const override { return debug_; }
   bool wants_snapshot() const override {
-    return params_.refraction_source == WaterRefractionSource::snapshot;
+    return params_.value().refraction_source == WaterRefractionSource::snapshot;
   }
   VkRect2D snapshot_region() const override { return snapshot_region_; }
 
@@ -111,8 +82,8 @@ public:
     frame_ = info.frame_index;
     release_.collect(frame_);
     use_snapshot_ = wants_snapshot() && info.snapshot != nullptr;
-    reflection_.set_scale(params_.resolution_scale);
-    refraction_.set_scale(params_.resolution_scale);
+    reflection_.set_scale(params_.value().resolution_scale);
+    refraction_.set_scale(params_.value().resolution_scale);
     const VkExtent2D e = info.main_view.extent;
     auto made = reflection_.fit(*ctx_, e, frame_, release_);
     if (!made) {
@@ -161,7 +132,7 @@ public:
   }
 
   Result<void> record_draw(VkCommandBuffer cmd, const FrameInfo& info) override {
-    const WaterParams& p = params_;
+    const WaterParams& p = params_.value();
     WaterBlock b{};
     b.view_proj = info.main_view.proj * info.main_view.view;
     const VkSampler clamp = ctx_->sampler(StandardSampler::linear_clamp);
@@ -231,7 +202,7 @@ private:
   /// Loads a new normal map when the path changed; the old one stays on error, and is
   /// destroyed past the frames in flight when replaced.
   Result<void> apply_normal_map(const std::string& file) {
-    if (file == params_.normal_map && normal_map_.view() != VK_NULL_HANDLE) {
+    if (file == params_.value().normal_map && normal_map_.view() != VK_NULL_HANDLE) {
       return {};
     }
     auto tex = load_normal_map(file);
@@ -245,7 +216,7 @@ private:
   }
 
   void compute_views(const SceneView& main) {
-    const WaterParams& p = params_;
+    const WaterParams& p = params_.value();
     // Reflection: mirrored camera; refraction: the main camera. Seen from above the water the
     // reflection keeps y >= height - clip_offset and the refraction y <= height + clip_offset;
     // from below (underwater_) the sides swap: the surface reflects the underwater scene (total
@@ -278,7 +249,7 @@ private:
   /// (|slope| <= 2 sqrt(2) wave_height, times distortion, in uv) and two texels for the
   /// bilinear and gather footprints.
   [[nodiscard]] VkRect2D sampled_rect(const SceneView& main, VkExtent2D extent) const {
-    const WaterParams& p = params_;
+    const WaterParams& p = params_.value();
     const glm::vec2 half = 0.5f * p.size;
     const Aabb water{{p.center.x - half.x, p.height, p.center.y - half.y},
                      {p.center.x + half.x, p.height, p.center.y + half.y}};
@@ -291,8 +262,7 @@ private:
   std::uint32_t frames_in_flight_ = 2;
   VkRect2D snapshot_region_{}; ///< Main-view pixels the surface samples (this frame).
   DeferredRelease release_;
-  WaterParams params_;
-  std::string preset_ = "default";
+  ParamStore<WaterParams> params_{detail::water_table(), WaterParams{}};
   bool underwater_ = false;   ///< The eye is below the plane (this frame).
   bool use_snapshot_ = false; ///< Refraction from FrameInfo::snapshot this frame.
   bool debug_has_snapshot_ = false;

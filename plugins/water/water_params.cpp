@@ -106,16 +106,8 @@ WaterParams water_seed_preset(const WaterParams& base) {
 
 namespace detail {
 
-Result<void> apply_water_param(WaterParams& p, std::string_view key, const ParamValue& value) {
-  return table().set(p, key, value);
-}
-
-Result<ParamValue> read_water_param(const WaterParams& p, std::string_view key) {
-  return table().get(p, key);
-}
-
-Result<void> validate_water_params(const WaterParams& p) {
-  return table().validate(p);
+const ParamTable<WaterParams>& water_table() {
+  return table();
 }
 
 } // namespace detail

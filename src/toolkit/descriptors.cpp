@@ -177,4 +177,32 @@ void DescriptorSets::bind(VkCommandBuffer cmd, VkPipelineBindPoint bind_point,
                           dynamic_offsets);
 }
 
+Result<void> create_surface_bindings(const Context& ctx, const SurfaceBindingsDesc& desc,
+                                     UniformRing& ring, DescriptorSets& sets) {
+  auto made_ring = UniformRing::create(ctx, {.block_size = desc.block_size,
+                                             .frames_in_flight = desc.frames_in_flight,
+                                             .label = desc.label});
+  if (!made_ring) {
+    return made_ring.error();
+  }
+  DescriptorSetDesc sd;
+  sd.bindings.push_back({.binding = 0,
+                         .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                         .stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
+  for (std::uint32_t i = 1; i <= desc.images; ++i) {
+    sd.bindings.push_back({.binding = i});
+  }
+  sd.bindings.insert(sd.bindings.end(), desc.extra.begin(), desc.extra.end());
+  sd.frames_in_flight = desc.frames_in_flight;
+  sd.label = desc.label;
+  auto made_sets = DescriptorSets::create(ctx, sd);
+  if (!made_sets) {
+    return made_sets.error();
+  }
+  made_sets->set_buffer(0, made_ring->buffer(), 0, made_ring->block_size());
+  ring = std::move(*made_ring);
+  sets = std::move(*made_sets);
+  return {};
+}
+
 } // namespace snell

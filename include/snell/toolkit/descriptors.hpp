@@ -5,6 +5,7 @@
 #pragma once
 
 #include <snell/result.hpp>
+#include <snell/toolkit/uniform_ring.hpp>
 
 #include <vulkan/vulkan.h>
 
@@ -89,5 +90,26 @@ private:
   std::uint64_t version_ = 1;
   std::string label_;
 };
+
+/// Parameters of create_surface_bindings.
+struct SurfaceBindingsDesc {
+  VkDeviceSize block_size = 0; ///< Bytes of the per-frame uniform block (std140). Required, > 0.
+  /// Combined image samplers read by the fragment stage, at bindings 1..images. Default 0.
+  std::uint32_t images = 0;
+  /// More bindings after those (their binding numbers as given). Default none.
+  std::vector<DescriptorBinding> extra{};
+  /// EffectCreateInfo::frames_in_flight, 1..16. Default 2.
+  std::uint32_t frames_in_flight = 2;
+  const char* label = "surface bindings"; ///< Names the ring and the sets in errors.
+};
+
+/// The bindings most effect surfaces use, made together: a UniformRing of one block per frame
+/// and the DescriptorSets whose binding 0 is that ring (a dynamic uniform buffer read by the
+/// vertex and fragment stages, already pointed at the ring), bindings 1..images sampled images
+/// (point them with set_image), then `extra`. Errors: those of UniformRing::create and
+/// DescriptorSets::create; `ring` and `sets` are unchanged on error.
+[[nodiscard]] Result<void> create_surface_bindings(const Context& ctx,
+                                                   const SurfaceBindingsDesc& desc,
+                                                   UniformRing& ring, DescriptorSets& sets);
 
 } // namespace snell

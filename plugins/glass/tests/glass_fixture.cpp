@@ -44,33 +44,10 @@ int add_transmissive_material(Scene& scene, glm::vec3 tint) {
 }
 
 void GlassRig::init(Context& ctx) {
-  auto r = SceneRenderer::create(ctx, scene);
-  GLASS_REQUIRE_OK(r);
-  renderer.emplace(std::move(*r));
-  auto f = FrameRenderer::create(
-      ctx, FrameDesc{.width = width, .height = height, .color = ColorFormat::rgba8_srgb});
-  GLASS_REQUIRE_OK(f);
-  frame.emplace(std::move(*f));
-  EffectCreateInfo info;
-  info.context = &ctx;
-  info.color_format = frame->target().vk_color_format();
-  info.depth_format = frame->target().depth_format();
-  info.scene = &scene;
-  auto g = create_glass(info);
+  init_frame(ctx);
+  auto g = create_glass(effect_info(ctx));
   GLASS_REQUIRE_OK(g);
   glass = std::move(*g);
-}
-
-Image GlassRig::render_effects(Span<Effect* const> effects) {
-  auto stats = frame->render(*renderer, camera, 0.0f, effects, scene.light);
-  GLASS_REQUIRE_OK(stats);
-  const std::string effect_error =
-      stats->effect_errors.empty() ? std::string() : stats->effect_errors.front().message;
-  REQUIRE_MESSAGE(stats->effect_errors.empty(), effect_error);
-  last_stats = *stats;
-  auto image = frame->read_color();
-  GLASS_REQUIRE_OK(image);
-  return *image;
 }
 
 Image GlassRig::render(bool with_glass) {
@@ -81,10 +58,6 @@ Image GlassRig::render(bool with_glass) {
 void GlassRig::set(const GlassParams& p) {
   auto r = glass->set_params(p);
   GLASS_REQUIRE_OK(r);
-}
-
-SceneView GlassRig::main_view() const {
-  return make_main_view(camera, width, height);
 }
 
 glm::mat4 GlassRig::view_proj() const {

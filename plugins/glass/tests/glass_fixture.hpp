@@ -4,7 +4,7 @@
 // tracer through a solid slab (Snell's law at both faces), independent of the shader.
 #pragma once
 
-#include "gpu_fixture.hpp"
+#include "frame_rig.hpp"
 
 #include <snell/frame.hpp>
 #include <snell/glass.hpp>
@@ -35,27 +35,22 @@ namespace snell::test {
 constexpr std::uint32_t kGlassWidth = 640;
 constexpr std::uint32_t kGlassHeight = 360;
 
-/// Everything one glass test renders with.
-struct GlassRig {
-  Scene scene;
-  std::optional<SceneRenderer> renderer;
-  std::optional<FrameRenderer> frame;
-  FrameStats last_stats; ///< Of the last render().
+/// Everything one glass test renders with: the frame rig (640 x 360, sRGB) and the glass.
+struct GlassRig : FrameRig {
   std::unique_ptr<GlassEffect> glass;
-  CameraDesc camera;
-  std::uint32_t width = kGlassWidth, height = kGlassHeight;
 
-  /// Builds the scene renderer, an rgba8_srgb frame of width x height and the glass effect
-  /// (create_glass with this scene). Call after the scene and camera are set.
+  GlassRig() {
+    width = kGlassWidth;
+    height = kGlassHeight;
+    color = ColorFormat::rgba8_srgb;
+  }
+  /// Builds the scene renderer, the frame and the glass effect (create_glass with this scene).
+  /// Call after the scene and camera are set.
   void init(Context& ctx);
   /// One frame with the glass (or, with_glass = false, the opaque scene alone), read back.
   Image render(bool with_glass = true);
-  /// One frame with `effects`, read back; REQUIREs no effect errors.
-  Image render_effects(Span<Effect* const> effects);
   /// Sets the glass parameters (REQUIREs success).
   void set(const GlassParams& p);
-  /// The main view the frame uses.
-  [[nodiscard]] SceneView main_view() const;
   [[nodiscard]] glm::mat4 view_proj() const;
 };
 

@@ -19,34 +19,15 @@ Scene water_test_scene() {
 }
 
 void WaterRig::init(Context& ctx) {
-  auto r = SceneRenderer::create(ctx, scene);
-  REQUIRE_MESSAGE(r.has_value(), r.error().message);
-  renderer.emplace(std::move(*r));
-  auto f = FrameRenderer::create(
-      ctx, FrameDesc{.width = width, .height = height, .color = ColorFormat::rgba8_unorm});
-  REQUIRE(f.has_value());
-  frame.emplace(std::move(*f));
-  EffectCreateInfo info;
-  info.context = &ctx;
-  info.color_format = frame->target().vk_color_format();
-  info.scene = &scene;
-  auto w = create_water(info);
-  REQUIRE_MESSAGE(w.has_value(), w.error().message);
+  init_frame(ctx);
+  auto w = create_water(effect_info(ctx));
+  REQUIRE_MESSAGE(w.has_value(), (w ? std::string() : w.error().message));
   water = std::move(*w);
 }
 
 Image WaterRig::render(float time, bool with_water) {
   Effect* effects[] = {water.get()};
-  auto stats = with_water ? frame->render(*renderer, camera, time, effects, scene.light)
-                          : frame->render(*renderer, camera, time);
-  REQUIRE_MESSAGE(stats.has_value(), stats.error().message);
-  const std::string effect_error =
-      stats->effect_errors.empty() ? std::string() : stats->effect_errors.front().message;
-  REQUIRE_MESSAGE(stats->effect_errors.empty(), effect_error);
-  last_stats = *stats;
-  auto image = frame->read_color();
-  REQUIRE(image.has_value());
-  return *image;
+  return render_effects(with_water ? Span<Effect* const>(effects) : Span<Effect* const>(), time);
 }
 
 std::unique_ptr<WaterEffect> bare_water(Context& ctx) {
@@ -68,10 +49,6 @@ PixelRay pixel_ray(const SceneView& view, std::uint32_t x, std::uint32_t y, std:
   ray.origin = glm::vec3(a) / a.w;
   ray.dir = glm::normalize(glm::vec3(b) / b.w - ray.origin);
   return ray;
-}
-
-SceneView WaterRig::main_view() const {
-  return make_main_view(camera, width, height);
 }
 
 } // namespace snell::test

@@ -2,29 +2,21 @@
 // rendering frames with or without the water effect.
 #pragma once
 
-#include "gpu_fixture.hpp"
+#include "frame_rig.hpp"
 
 #include <snell/frame.hpp>
 #include <snell/water.hpp>
 
 namespace snell::test {
 
-/// Everything one water test renders with.
-struct WaterRig {
-  Scene scene;
-  std::optional<SceneRenderer> renderer;
-  std::optional<FrameRenderer> frame;
-  FrameStats last_stats; ///< Of the last render().
+/// Everything one water test renders with: the frame rig and the water effect.
+struct WaterRig : FrameRig {
   std::unique_ptr<WaterEffect> water;
-  CameraDesc camera;
-  std::uint32_t width = 256, height = 192;
 
-  /// Builds the renderer, a frame of width x height and the water effect from the scene.
+  /// Builds the renderer, the frame and the water effect from the scene.
   void init(Context& ctx);
-  /// One frame (with the water when `with_water`), read back as RGBA8.
+  /// One frame at `time` (with the water when `with_water`), read back as RGBA8.
   Image render(float time, bool with_water = true);
-  /// The main view the frame uses.
-  [[nodiscard]] SceneView main_view() const;
 };
 
 /// A dark scene: water at y = 0 over 20 x 20 m, a grey floor at y = -2, sky black.
