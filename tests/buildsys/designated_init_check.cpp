@@ -23,6 +23,7 @@
 #include <snell/toolkit/scene_pass.hpp>
 #include <snell/toolkit/surfaces.hpp>
 #include <snell/toolkit/uniform_ring.hpp>
+#include <snell/glass.hpp>
 #include <snell/water.hpp>
 
 namespace snell::build_check {
@@ -72,6 +73,8 @@ namespace snell::build_check {
   [[maybe_unused]] const DescriptorSetDesc sets{.bindings = {}};
   [[maybe_unused]] const Surface surface{.vertices = {}};
   [[maybe_unused]] const WaterParams water{.height = 1.0f};
+  [[maybe_unused]] const GlassParams glass{.pane = false};
+  [[maybe_unused]] const SurfaceBindingsDesc surface_bindings{.block_size = 16};
 }
 
 } // namespace snell::build_check
