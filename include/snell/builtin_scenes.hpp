@@ -118,6 +118,10 @@ struct BrickPattern {
 /// - pattern: see BrickPattern for each field's range.
 [[nodiscard]] Result<Image> make_brick_image(std::uint32_t size, const BrickPattern& pattern = {});
 
+/// A number in [0, 1) from three integers (lowbias32 hashes chained): the seeded hash every
+/// procedural texture uses (also the glass plugin's frost), identical on every platform.
+[[nodiscard]] float unit_hash(std::uint32_t a, std::uint32_t b = 0, std::uint32_t c = 0);
+
 /// A tileable tangent-space normal map of gentle ripples (water, ice, frosted glass).
 /// The height field is a sum of 16 sine waves with integer frequencies (1..8 cycles per image
 /// in x and y) chosen from `seed`, so opposite edges continue each other exactly; the normal is

@@ -14,22 +14,6 @@
 namespace snell::detail {
 namespace {
 
-/// A well-mixed 32-bit hash of three integers.
-std::uint32_t hash3(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  std::uint32_t h =
-      a * 0x9E3779B1u ^ (b + 0x7F4A7C15u) * 0x85EBCA77u ^ (c + 0x165667B1u) * 0xC2B2AE3Du;
-  h ^= h >> 15;
-  h *= 0x2C1B3C6Du;
-  h ^= h >> 12;
-  h *= 0x297A2D39u;
-  h ^= h >> 15;
-  return h;
-}
-
-float unit_hash(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  return static_cast<float>(hash3(a, b, c) >> 8) / 16777216.0f;
-}
-
 /// Value noise with `cells` cells across the unit square, periodic over it (smooth, [0, 1]).
 float periodic_noise(float u, float v, int cells, std::uint32_t seed) {
   const float x = u * static_cast<float>(cells), y = v * static_cast<float>(cells);

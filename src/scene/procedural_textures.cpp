@@ -85,13 +85,16 @@ std::uint32_t hash(std::uint32_t x) {
   return x;
 }
 
-// Uniform in [0, 1) from a hash of several integers.
 float unit(std::uint32_t a, std::uint32_t b = 0, std::uint32_t c = 0) {
-  const std::uint32_t h = hash(a ^ hash(b ^ hash(c + 0x9e3779b9u)));
-  return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+  return unit_hash(a, b, c);
 }
 
 } // namespace
+
+float unit_hash(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  const std::uint32_t h = hash(a ^ hash(b ^ hash(c + 0x9e3779b9u)));
+  return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+}
 
 Result<Image> make_checker_image(std::uint32_t size, std::uint32_t cells, glm::vec3 a,
                                  glm::vec3 b) {
