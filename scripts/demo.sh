@@ -30,6 +30,14 @@ done
 echo "=== render pool with water -> out/pool_water.png ==="
 "$build_dir/samples/cli/snell" render --scene pool --effect water --size 1280x720 \
   --out "$out_dir/pool_water.png"
+for effect in glass ice; do
+  echo "=== render window with $effect -> out/window_$effect.png ==="
+  "$build_dir/samples/cli/snell" render --scene window --effect "$effect" --size 1280x720 \
+    --out "$out_dir/window_$effect.png"
+done
+echo "=== render samples/assets/glass_grid.gltf with glass -> out/glass_grid.png ==="
+"$build_dir/samples/cli/snell" render --scene samples/assets/glass_grid.gltf --effect glass \
+  --size 1280x720 --out "$out_dir/glass_grid.png"
 echo "=== render samples/assets/courtyard.gltf -> out/courtyard.png ==="
 "$build_dir/samples/cli/snell" render --scene samples/assets/courtyard.gltf --size 1280x720 \
   --out "$out_dir/courtyard.png"
