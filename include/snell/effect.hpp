@@ -64,6 +64,7 @@ enum class ParamType : std::uint8_t {
   vec4,        ///< glm::vec4
   color,       ///< glm::vec3, linear RGB, each within [0, 1]
   texture,     ///< std::string: a file path (PNG/JPEG), "" for the built-in default
+  string, ///< std::string: any text the effect gives a meaning to (a glTF node name); "" = none
 };
 
 /// A parameter value: bool, int, float, vec2/3/4 or string (enumerations and texture paths).

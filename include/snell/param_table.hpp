@@ -102,6 +102,12 @@ public:
   ParamTable& texture(std::string name, std::string P::*member, std::string doc) {
     return plain(ParamType::texture, std::move(name), member, 0.0f, 0.0f, "", std::move(doc));
   }
+  /// A std::string member holding text the effect interprets (e.g. a glTF node name), "" for
+  /// none. Only the type is checked here; the effect refuses a text it cannot use (an unknown
+  /// node) with a message naming it.
+  ParamTable& string(std::string name, std::string P::*member, std::string doc) {
+    return plain(ParamType::string, std::move(name), member, 0.0f, 0.0f, "", std::move(doc));
+  }
   /// An enum member (enum or enum class, values 0..n-1): the value i is the text `choices[i]`,
   /// so `choices` lists the names in the enum's declaration order. A value outside [0, n-1]
   /// cast into the struct is refused by get and validate.

@@ -114,7 +114,8 @@ int run_list() {
           range += (range.empty() ? "" : "|");
           range += c;
         }
-      } else if (p.type != ParamType::boolean && p.type != ParamType::texture) {
+      } else if (p.type != ParamType::boolean && p.type != ParamType::texture &&
+                 p.type != ParamType::string) {
         range = '[';
         range += to_string(ParamValue{p.min});
         range += ", ";

@@ -76,6 +76,8 @@ std::string_view to_string(ParamType type) {
     return "color";
   case ParamType::texture:
     return "texture";
+  case ParamType::string:
+    return "string";
   }
   return "?";
 }
@@ -203,6 +205,7 @@ Result<void> validate_param(const ParamSchema& schema, const ParamSpec& spec,
     return v ? check_components<4>(schema, spec, &v->x) : wrong_type();
   }
   case ParamType::texture:
+  case ParamType::string:
     return std::holds_alternative<std::string>(value) ? Result<void>{} : wrong_type();
   }
   return wrong_type();
@@ -292,6 +295,7 @@ Result<ParamValue> parse_param(const ParamSchema& schema, const ParamSpec& spec,
   }
   case ParamType::enumeration:
   case ParamType::texture:
+  case ParamType::string:
     value = std::string(text);
     break;
   }

@@ -39,6 +39,7 @@ std::size_t value_index(ParamType type) {
     return ParamValue(glm::vec4(0.0f)).index();
   case ParamType::enumeration:
   case ParamType::texture:
+  case ParamType::string:
     return ParamValue(std::string()).index();
   }
   return std::variant_npos;
@@ -114,6 +115,8 @@ std::vector<ParamValue> valid_values(const ParamSpec& spec) {
     return std::vector<ParamValue>(spec.choices.begin(), spec.choices.end());
   case ParamType::texture:
     return {std::string()};
+  case ParamType::string:
+    return {std::string()}; // "" (none) is valid for every string parameter
   }
   return {};
 }
@@ -170,6 +173,7 @@ std::vector<ParamValue> invalid_values(const ParamSpec& spec) {
     out = {std::string("no_such_choice"), std::string(), 0, 0.0f};
     break;
   case ParamType::texture:
+  case ParamType::string:
     out = {0, 0.0f, false};
     break;
   }
@@ -278,6 +282,7 @@ struct Local {
   glm::vec3 c{0.1f, 0.2f, 0.3f};
   Shape shape = Shape::sphere;
   std::string tex;
+  std::string node = "owner";
 };
 
 const ParamTable<Local>& local_table() {
@@ -300,7 +305,8 @@ const ParamTable<Local>& local_table() {
           .vec4("v4", &Local::v4, -2.0f, 2.0f, "", "a vec4")
           .color("c", &Local::c, "a colour")
           .enumeration("shape", &Local::shape, {"box", "sphere", "plane"}, "an enum")
-          .texture("tex", &Local::tex, "a texture");
+          .texture("tex", &Local::tex, "a texture")
+          .string("node", &Local::node, "a node name");
   return t;
 }
 
@@ -312,7 +318,7 @@ TEST_CASE("conformance: ParamTable on a local struct (CPU)") {
   // The schema: declaration order, types, defaults from Local{}, ranges, units, docs.
   CHECK(schema.effect == "local");
   CHECK(schema.doc == "A local struct.");
-  CHECK(schema.key_list() == "f, reset, i, b, v2, v3, v4, c, shape, tex");
+  CHECK(schema.key_list() == "f, reset, i, b, v2, v3, v4, c, shape, tex, node");
   const Local d;
   const std::vector<std::pair<ParamType, ParamValue>> expected = {
       {ParamType::number, d.f},
@@ -324,7 +330,8 @@ TEST_CASE("conformance: ParamTable on a local struct (CPU)") {
       {ParamType::vec4, d.v4},
       {ParamType::color, d.c},
       {ParamType::enumeration, std::string("sphere")},
-      {ParamType::texture, std::string()}};
+      {ParamType::texture, std::string()},
+      {ParamType::string, std::string("owner")}};
   REQUIRE(schema.params.size() == expected.size());
   for (std::size_t k = 0; k < expected.size(); ++k) {
     INFO("key: ", schema.params[k].name);
