@@ -9,6 +9,7 @@
 #include <snell/context.hpp>
 #include <snell/effect.hpp>
 #include <snell/frame.hpp>
+#include <snell/glass.hpp>
 #include <snell/gpu_timer.hpp>
 #include <snell/images.hpp>
 #include <snell/pipeline.hpp>
@@ -23,7 +24,6 @@
 #include <snell/toolkit/scene_pass.hpp>
 #include <snell/toolkit/surfaces.hpp>
 #include <snell/toolkit/uniform_ring.hpp>
-#include <snell/glass.hpp>
 #include <snell/water.hpp>
 
 namespace snell::build_check {
