@@ -1,0 +1,37 @@
+// The dynamic cube map's parameters, each declared once (schema, set, get, validation).
+#include "cubemap_internal.hpp"
+
+namespace snell {
+
+const ParamSchema& dynamic_cubemap_schema() {
+  return detail::cubemap_table().schema();
+}
+
+namespace detail {
+
+const ParamTable<DynamicCubemapParams>& cubemap_table() {
+  using C = DynamicCubemapParams;
+  static const ParamTable<C> t =
+      ParamTable<C>("dynamic_cubemap",
+                    "A probe capturing the scene into a cube map; a mirror or glass sphere.")
+          .vec3("center", &C::center, -1e4f, 1e4f, "m", "Where the capture is taken")
+          .number("radius", &C::radius, 0.01f, 1e4f, "m",
+                  "Radius of the effect's own sphere (when the anchor names no object)")
+          .integer("face_size", &C::face_size, 16, 2048, "px", "Width and height of a cube face")
+          .number("z_near", &C::z_near, 0.001f, 100.0f, "m", "Near distance of the capture")
+          .number("z_far", &C::z_far, 0.01f, 1e5f, "m", "Far distance of the capture")
+          .enumeration("capture", &C::capture, {"multiview", "six_pass"},
+                       "One multiview pass for the six faces, or six passes (seed 002)")
+          .integer("capture_layers", &C::capture_layers, 0, 255, "",
+                   "Objects drawn into the capture (snell::layer bits)")
+          .enumeration("surface", &C::surface, {"reflect", "refract", "glass"},
+                       "Mirror, refraction through a solid sphere, or both by Fresnel")
+          .number("ior", &C::ior, 1.0f, 3.0f, "", "Index of refraction of the sphere")
+          .number("roughness", &C::roughness, 0.0f, 1.0f, "",
+                  "Blur: the mip level as a fraction of the cube's levels")
+          .color("tint", &C::tint, "Colour multiplying what the surface shows");
+  return t;
+}
+
+} // namespace detail
+} // namespace snell

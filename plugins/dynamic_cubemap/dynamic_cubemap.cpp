@@ -1,0 +1,204 @@
+// The dynamic cube map effect: every frame the scene around the probe is captured into a cube
+// (toolkit record_cube_capture: multiview or six passes, then mips), and the probe's owner is
+// drawn from it inside the host's main rendering.
+#include "cubemap_internal.hpp"
+
+#include <snell/plugin.hpp>
+
+#include "snell_dynamic_cubemap_shaders.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <string>
+#include <vector>
+
+namespace snell {
+namespace {
+
+/// std140 mirror of ProbeBlock in shaders/probe_common.glsl.
+struct ProbeBlock {
+  glm::mat4 view_proj;
+  glm::mat4 model;
+  glm::vec4 eye, optics, tint;
+};
+
+class DynamicCubemap final : public DynamicCubemapEffect {
+public:
+  Result<void> init(const EffectCreateInfo& info) {
+    ctx_ = info.context;
+    scene_ = info.scene;
+    release_ = DeferredRelease(info.frames_in_flight);
+    int owner = -1;
+    if (scene_ != nullptr) {
+      if (const Anchor* a = scene_->find_anchor("probe")) {
+        params_.value().center = a->position;
+        params_.value().radius = std::max(0.5f * a->size.x, 0.01f);
+        owner = a->object;
+      }
+    }
+    // The owner: the anchor's object when it names one (drawn by the effect, hidden from the
+    // scene renderer), else the effect's own sphere.
+    if (owner >= 0) {
+      SNELL_ASSIGN_OR_RETURN(
+          owner_, Surfaces::from_scene(
+                      *ctx_, *scene_, [this, owner](const Object& o, const Mesh&, const Material&) {
+                        return &o == &scene_->objects[static_cast<std::size_t>(owner)];
+                      }));
+    }
+    if (owner_.empty()) { // no anchor object, or one without a mesh
+      SNELL_ASSIGN_OR_RETURN(owner_, Surfaces::shape(*ctx_, Shape::sphere));
+    }
+    SNELL_TRY(create_surface_bindings(*ctx_,
+                                      {.block_size = sizeof(ProbeBlock),
+                                       .images = 1,
+                                       .frames_in_flight = info.frames_in_flight,
+                                       .label = "dynamic_cubemap surface"},
+                                      ubo_, sets_));
+    SNELL_ASSIGN_OR_RETURN(
+        pipeline_,
+        Pipeline::create(*ctx_, surface_pipeline_desc(info, "dynamic_cubemap surface pipeline",
+                                                      dynamic_cubemap::shaders::probe_surface_vert,
+                                                      dynamic_cubemap::shaders::probe_surface_frag,
+                                                      {sets_.layout()})));
+    return {};
+  }
+
+  std::string_view type() const override { return "dynamic_cubemap"; }
+  Result<void> set_param(std::string_view key, const ParamValue& value) override {
+    return params_.set(key, value, [](const DynamicCubemapParams&) { return Result<void>{}; });
+  }
+  Result<ParamValue> get_param(std::string_view key) const override { return params_.get(key); }
+  Result<void> set_params(const DynamicCubemapParams& params) override {
+    return params_.set_all(params, [](const DynamicCubemapParams&) { return Result<void>{}; });
+  }
+  const DynamicCubemapParams& params() const override { return params_.value(); }
+  Span<const DebugTarget> debug_targets() const override { return debug_; }
+  Span<const int> drawn_objects() const override { return owner_.objects(); }
+
+  Result<void> update(const FrameInfo& info) override {
+    frame_ = info.frame_index;
+    release_.collect(frame_);
+    const auto size = static_cast<std::uint32_t>(params_.value().face_size);
+    if (!cube_ || cube_.size() != size) {
+      CubeTarget cube;
+      SNELL_ASSIGN_OR_RETURN(
+          cube, CubeTarget::create(*ctx_, CubeTargetDesc{.size = size,
+                                                         .color = ColorFormat::rgba16_float,
+                                                         .mips = true,
+                                                         .debug_name = "dynamic_cubemap cube"}));
+      if (cube_) {
+        release_.retire(frame_, std::move(cube_));
+      }
+      cube_ = std::move(cube);
+      sets_.set_image(1, cube_.cube_view(), ctx_->sampler(StandardSampler::linear_clamp));
+      debug_.clear();
+      for (std::uint32_t face = 0; face < 6; ++face) {
+        static const char* const names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+        debug_.push_back(DebugTarget{.name = std::string("dynamic_cubemap.face") + names[face],
+                                     .kind = DebugKind::cube_face,
+                                     .view = cube_.face_view(face),
+                                     .image = cube_.color_image(),
+                                     .width = size,
+                                     .height = size,
+                                     .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                     .layer = face});
+      }
+    }
+    time_ = info.time;
+    return {};
+  }
+
+  Result<void> record_passes(VkCommandBuffer cmd, const FrameInfo& info,
+                             SceneSource& scene) override {
+    const DynamicCubemapParams& p = params_.value();
+    CubeCapture capture;
+    capture.name = "dynamic_cubemap.capture";
+    capture.center = p.center;
+    capture.z_near = p.z_near;
+    capture.z_far = p.z_far;
+    capture.layer_mask = static_cast<std::uint32_t>(p.capture_layers);
+    // Lavapipe (Mesa 22.3, the CPU device) draws views 1..5 of the multiview capture wrongly:
+    // no sky and a floor filling the -x face, where the same build on an NVIDIA H100 and the
+    // six-pass path on lavapipe are right (docs/cubemap.md). On a CPU device it captures the
+    // faces one by one; six passes cost the CPU rasteriser no more than six views.
+    const bool multiview = p.capture == CubemapCaptureMode::multiview &&
+                           ctx_->device_info().type != VK_PHYSICAL_DEVICE_TYPE_CPU;
+    capture.mode = multiview ? CubeCaptureMode::multiview : CubeCaptureMode::six_pass;
+    capture.time = info.time;
+    return record_cube_capture(cmd, scene, cube_, capture, info.timer);
+  }
+
+  Result<void> record_draw(VkCommandBuffer cmd, const FrameInfo& info) override {
+    const DynamicCubemapParams& p = params_.value();
+    ProbeBlock b{};
+    b.view_proj = info.main_view.proj * info.main_view.view;
+    const Surface& owner = owner_[0];
+    if (owner.object >= 0 && scene_ != nullptr) {
+      b.model = scene_->objects[static_cast<std::size_t>(owner.object)].world_at(time_);
+    } else {
+      // The unit sphere shape has radius 0.5.
+      b.model = glm::scale(glm::translate(glm::mat4(1.0f), p.center), glm::vec3(2.0f * p.radius));
+    }
+    b.eye = glm::vec4(info.main_view.eye, 1.0f);
+    b.optics = glm::vec4(static_cast<float>(p.surface), p.ior, p.roughness,
+                         static_cast<float>(cube_.mip_levels()));
+    b.tint = glm::vec4(p.tint, 1.0f);
+    std::uint32_t offset = 0;
+    SNELL_ASSIGN_OR_RETURN(offset, ubo_.push(frame_, b));
+    pipeline_.bind(cmd);
+    sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), frame_, &offset, 1);
+    vkCmdSetCullMode(cmd, VK_CULL_MODE_BACK_BIT);
+    const bool mirrored = glm::determinant(glm::mat3(b.model)) < 0.0f;
+    vkCmdSetFrontFace(cmd, mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+    for (std::size_t i = 0; i < owner_.size(); ++i) {
+      owner_.draw(cmd, i);
+    }
+    return {};
+  }
+
+private:
+  const Context* ctx_ = nullptr;
+  const Scene* scene_ = nullptr;
+  DeferredRelease release_;
+  ParamStore<DynamicCubemapParams> params_{detail::cubemap_table(), DynamicCubemapParams{}};
+  std::uint64_t frame_ = 0;
+  float time_ = 0.0f;
+  CubeTarget cube_;
+  Surfaces owner_;
+  UniformRing ubo_;
+  DescriptorSets sets_;
+  Pipeline pipeline_;
+  std::vector<DebugTarget> debug_;
+};
+
+} // namespace
+
+Result<std::unique_ptr<DynamicCubemapEffect>> create_dynamic_cubemap(const EffectCreateInfo& info) {
+  if (info.context == nullptr) {
+    return fail(ErrorCode::invalid_argument,
+                "dynamic_cubemap: EffectCreateInfo::context is required");
+  }
+  if (info.frames_in_flight < 1 || info.frames_in_flight > 16) {
+    return fail(ErrorCode::invalid_argument,
+                "dynamic_cubemap: EffectCreateInfo::frames_in_flight = " +
+                    std::to_string(info.frames_in_flight) + " is outside [1, 16]");
+  }
+  auto effect = std::make_unique<DynamicCubemap>();
+  SNELL_TRY(effect->init(info));
+  return std::unique_ptr<DynamicCubemapEffect>(std::move(effect));
+}
+
+Result<void> register_dynamic_cubemap(EffectRegistry& registry) {
+  return registry.add(
+      "dynamic_cubemap",
+      [](const EffectCreateInfo& info) -> Result<std::unique_ptr<Effect>> {
+        auto e = create_dynamic_cubemap(info);
+        if (!e) {
+          return e.error();
+        }
+        return std::unique_ptr<Effect>(std::move(*e));
+      },
+      dynamic_cubemap_schema());
+}
+
+} // namespace snell

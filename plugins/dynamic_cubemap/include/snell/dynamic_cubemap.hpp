@@ -1,0 +1,83 @@
+// Snell plugin "dynamic_cubemap" (seed 002): a probe captures the scene around a point into a cube
+// map every frame (six faces in one multiview pass, or the seed's six passes) and draws its
+// owner, a reflecting or refracting sphere, from it. First step of the effect: capture, mips,
+// the owner left out of its own capture, reflect / refract / glass surfaces with roughness.
+// See docs/cubemap.md.
+#pragma once
+
+#include <snell/effect.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <memory>
+
+namespace snell {
+
+/// How the six faces are drawn.
+enum class CubemapCaptureMode : std::uint8_t {
+  /// One pass, view mask 0b111111 (six views). Default. On a CPU device (lavapipe) the faces
+  /// are drawn one by one instead: Mesa 22.3's lavapipe renders views 1..5 wrongly.
+  multiview,
+  six_pass, ///< Six passes, one per face (seed 002).
+};
+
+/// What the owner's surface shows.
+enum class CubemapSurface : std::uint8_t {
+  reflect, ///< A mirror: the capture along reflect(view, normal). Default.
+  refract, ///< Through a solid sphere of `ior`: refracted in, across, and out again.
+  glass,   ///< Both, weighted by exact dielectric Fresnel.
+};
+
+/// Parameters of the dynamic cube map. Every field documents its default and range; `snell list`
+/// prints the same from the schema.
+struct DynamicCubemapParams {
+  /// Where the capture is taken and the sphere drawn, world units (m). Default: the scene's
+  /// "probe" anchor, else (0, 1, 0). Each in [-1e4, 1e4].
+  glm::vec3 center{0.0f, 1.0f, 0.0f};
+  /// Radius of the sphere the effect draws when the anchor names no object of the scene, m.
+  /// Default: half the anchor's size, else 0.5. [0.01, 1e4].
+  float radius = 0.5f;
+  /// Width = height of each cube face, pixels. Default 256 (seed 002). [16, 2048].
+  int face_size = 256;
+  /// Near and far distances of the capture, m. Defaults 0.05 and 200. z_near in [0.001, 100],
+  /// z_far in [0.01, 1e5]; z_near < z_far is required when capturing.
+  float z_near = 0.05f;
+  float z_far = 200.0f;
+  /// How the faces are drawn. Default multiview.
+  CubemapCaptureMode capture = CubemapCaptureMode::multiview;
+  /// Objects drawn into the capture (snell::layer bits). Default layer::captured (8): the owner
+  /// of the probe has no `captured` bit and stays out of its own capture.
+  int capture_layers = 8;
+  /// What the surface shows. Default reflect.
+  CubemapSurface surface = CubemapSurface::reflect;
+  /// Index of refraction of the sphere for refract and glass (seed 002: air 1.0, water 1.33,
+  /// glass 1.51). Default 1.51. [1, 3].
+  float ior = 1.51f;
+  /// Blur of the lookups: the mip level, as a fraction of the cube's levels. 0 = sharp.
+  /// Default 0. [0, 1].
+  float roughness = 0.0f;
+  /// Colour multiplying what the surface shows (a metal's reflectance), linear RGB. Default
+  /// (1, 1, 1). Each in [0, 1].
+  glm::vec3 tint{1.0f, 1.0f, 1.0f};
+};
+
+/// The dynamic cube map effect with its typed API.
+class DynamicCubemapEffect : public Effect {
+public:
+  /// Sets every parameter at once (validated; unchanged on error).
+  [[nodiscard]] virtual Result<void> set_params(const DynamicCubemapParams& params) = 0;
+  /// The current parameters.
+  [[nodiscard]] virtual const DynamicCubemapParams& params() const = 0;
+};
+
+/// Creates the effect. Errors: invalid_argument (no context, frames_in_flight outside [1, 16]),
+/// Vulkan errors.
+[[nodiscard]] Result<std::unique_ptr<DynamicCubemapEffect>>
+create_dynamic_cubemap(const EffectCreateInfo& info);
+/// The parameter schema ("dynamic_cubemap").
+[[nodiscard]] const ParamSchema& dynamic_cubemap_schema();
+/// Registers "dynamic_cubemap".
+[[nodiscard]] Result<void> register_dynamic_cubemap(EffectRegistry& registry);
+
+} // namespace snell

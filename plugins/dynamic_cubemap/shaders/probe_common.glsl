@@ -1,0 +1,16 @@
+// Shared by the probe surface shaders: the per-frame uniform block (std140 mirror of ProbeBlock
+// in dynamic_cubemap.cpp) and the cube.
+#ifndef PROBE_COMMON_GLSL
+#define PROBE_COMMON_GLSL
+
+layout(set = 0, binding = 0, std140) uniform ProbeBlock {
+  mat4 view_proj; // the main view
+  mat4 model;     // the owner's object to world
+  vec4 eye;       // xyz world eye
+  vec4 optics;    // x surface (0 reflect, 1 refract, 2 glass), y ior, z roughness, w mip levels
+  vec4 tint;      // rgb
+} probe_block;
+
+layout(set = 0, binding = 1) uniform samplerCube probe_cube;
+
+#endif
