@@ -15,6 +15,8 @@ const ParamTable<DynamicCubemapParams>& cubemap_table() {
       ParamTable<C>("dynamic_cubemap",
                     "A probe capturing the scene into a cube map; a mirror or glass sphere.")
           .vec3("center", &C::center, -1e4f, 1e4f, "m", "Where the capture is taken")
+          .string("node", &C::node,
+                  "Scene object the probe is attached to (\"\": the probe anchor's, else a sphere)")
           .number("radius", &C::radius, 0.01f, 1e4f, "m",
                   "Radius of the effect's own sphere (when the anchor names no object)")
           .integer("face_size", &C::face_size, 16, 2048, "px", "Width and height of a cube face")

@@ -7,6 +7,8 @@
 
 #include "snell_dynamic_cubemap_shaders.hpp"
 
+#include <snell/math/bounds.hpp>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <string>
@@ -28,26 +30,14 @@ public:
     ctx_ = info.context;
     scene_ = info.scene;
     release_ = DeferredRelease(info.frames_in_flight);
-    int owner = -1;
     if (scene_ != nullptr) {
       if (const Anchor* a = scene_->find_anchor("probe")) {
         params_.value().center = a->position;
         params_.value().radius = std::max(0.5f * a->size.x, 0.01f);
-        owner = a->object;
+        anchor_object_ = a->object;
       }
     }
-    // The owner: the anchor's object when it names one (drawn by the effect, hidden from the
-    // scene renderer), else the effect's own sphere.
-    if (owner >= 0) {
-      SNELL_ASSIGN_OR_RETURN(
-          owner_, Surfaces::from_scene(
-                      *ctx_, *scene_, [this, owner](const Object& o, const Mesh&, const Material&) {
-                        return &o == &scene_->objects[static_cast<std::size_t>(owner)];
-                      }));
-    }
-    if (owner_.empty()) { // no anchor object, or one without a mesh
-      SNELL_ASSIGN_OR_RETURN(owner_, Surfaces::shape(*ctx_, Shape::sphere));
-    }
+    SNELL_ASSIGN_OR_RETURN(owner_, take_owner(""));
     SNELL_TRY(create_surface_bindings(*ctx_,
                                       {.block_size = sizeof(ProbeBlock),
                                        .images = 1,
@@ -65,11 +55,13 @@ public:
 
   std::string_view type() const override { return "dynamic_cubemap"; }
   Result<void> set_param(std::string_view key, const ParamValue& value) override {
-    return params_.set(key, value, [](const DynamicCubemapParams&) { return Result<void>{}; });
+    return params_.set(key, value,
+                       [this](const DynamicCubemapParams& next) { return apply_node(next); });
   }
   Result<ParamValue> get_param(std::string_view key) const override { return params_.get(key); }
   Result<void> set_params(const DynamicCubemapParams& params) override {
-    return params_.set_all(params, [](const DynamicCubemapParams&) { return Result<void>{}; });
+    return params_.set_all(params,
+                           [this](const DynamicCubemapParams& next) { return apply_node(next); });
   }
   const DynamicCubemapParams& params() const override { return params_.value(); }
   Span<const DebugTarget> debug_targets() const override { return debug_; }
@@ -113,7 +105,7 @@ public:
     const DynamicCubemapParams& p = params_.value();
     CubeCapture capture;
     capture.name = "dynamic_cubemap.capture";
-    capture.center = p.center;
+    capture.center = capture_center(info.time);
     capture.z_near = p.z_near;
     capture.z_far = p.z_far;
     capture.layer_mask = static_cast<std::uint32_t>(p.capture_layers);
@@ -157,8 +149,74 @@ public:
   }
 
 private:
+  /// The owner's meshes for `node` ("" : the anchor's object, else the effect's own sphere).
+  /// Errors name dynamic_cubemap.node and the value.
+  Result<Surfaces> take_owner(const std::string& node) const {
+    int object = anchor_object_;
+    if (!node.empty()) {
+      object = -1;
+      if (scene_ != nullptr) {
+        for (std::size_t i = 0; i < scene_->objects.size(); ++i) {
+          if (scene_->objects[i].name == node) {
+            object = static_cast<int>(i);
+            break;
+          }
+        }
+      }
+      if (object < 0) {
+        return fail(ErrorCode::invalid_argument,
+                    "dynamic_cubemap.node: no object named '" + node + "' in " +
+                        (scene_ != nullptr ? "the scene '" + scene_->name + "'"
+                                           : std::string("a host scene (none was given)")));
+      }
+    }
+    Surfaces owner;
+    if (object >= 0 && scene_ != nullptr) {
+      const Object* chosen = &scene_->objects[static_cast<std::size_t>(object)];
+      SNELL_ASSIGN_OR_RETURN(
+          owner, Surfaces::from_scene(*ctx_, *scene_,
+                                      [chosen](const Object& o, const Mesh&, const Material&) {
+                                        return &o == chosen;
+                                      }));
+      if (owner.empty() && !node.empty()) {
+        return fail(ErrorCode::invalid_argument,
+                    "dynamic_cubemap.node: the object '" + node + "' has no mesh");
+      }
+    }
+    if (owner.empty()) { // no anchor object: the effect's own sphere
+      SNELL_ASSIGN_OR_RETURN(owner, Surfaces::shape(*ctx_, Shape::sphere));
+    }
+    return owner;
+  }
+
+  /// Replaces the owner when `next.node` differs (the old meshes retired past the frames in
+  /// flight); nothing changes on error.
+  Result<void> apply_node(const DynamicCubemapParams& next) {
+    if (next.node == params_.value().node) {
+      return {};
+    }
+    Surfaces owner;
+    SNELL_ASSIGN_OR_RETURN(owner, take_owner(next.node));
+    release_.retire(frame_, std::move(owner_));
+    owner_ = std::move(owner);
+    return {};
+  }
+
+  /// Where the capture is taken: the centre of a named owner's world bounds, else `center`.
+  glm::vec3 capture_center(float time) const {
+    const DynamicCubemapParams& p = params_.value();
+    const Surface& owner = owner_[0];
+    if (p.node.empty() || owner.object < 0 || scene_ == nullptr) {
+      return p.center;
+    }
+    const glm::mat4 world = scene_->objects[static_cast<std::size_t>(owner.object)].world_at(time);
+    const Aabb box = transform_aabb(Aabb{owner.bounds_min, owner.bounds_max}, world);
+    return 0.5f * (box.min + box.max);
+  }
+
   const Context* ctx_ = nullptr;
   const Scene* scene_ = nullptr;
+  int anchor_object_ = -1; ///< The "probe" anchor's object, or -1.
   DeferredRelease release_;
   ParamStore<DynamicCubemapParams> params_{detail::cubemap_table(), DynamicCubemapParams{}};
   std::uint64_t frame_ = 0;

@@ -3,6 +3,7 @@
 // pixel, independently of the shaders), and multiview and six-pass captures give the same image.
 #include "frame_rig.hpp"
 
+#include <snell/builtin_scenes.hpp>
 #include <snell/dynamic_cubemap.hpp>
 #include <snell/math.hpp>
 
@@ -140,4 +141,53 @@ TEST_CASE("dynamic_cubemap: multiview and six-pass captures give the same image"
   CHECK(worst <= 2);
   // The owner is the effect's own sphere here: nothing of the scene is hidden.
   CHECK(rig.probe->drawn_objects().empty());
+}
+
+// Fails if `node` is ignored (the green sphere keeps its own shading), if the owner is not left
+// out of the scene renderer, or if an unknown name is accepted or changes anything.
+TEST_CASE("dynamic_cubemap: node attaches the probe to a scene object, unknown names refused") {
+  test::GpuFixture gpu;
+  test::FrameRig rig;
+  auto scene = make_builtin_scene("spheres");
+  REQUIRE(scene.has_value());
+  rig.scene = std::move(*scene);
+  rig.camera = rig.scene.cameras.front();
+  rig.width = 320;
+  rig.height = 180;
+  rig.init_frame(gpu.ctx());
+  auto created = create_dynamic_cubemap(rig.effect_info(gpu.ctx()));
+  REQUIRE_MESSAGE(created.has_value(), (created ? std::string() : created.error().message));
+  std::unique_ptr<DynamicCubemapEffect> probe = std::move(*created);
+  int green = -1;
+  for (std::size_t i = 0; i < rig.scene.objects.size(); ++i) {
+    if (rig.scene.objects[i].name == "sphere_green") {
+      green = static_cast<int>(i);
+    }
+  }
+  REQUIRE(green >= 0);
+  const glm::vec3 centre(rig.scene.objects[static_cast<std::size_t>(green)].world_at(0.0f)[3]);
+  const SceneView view = rig.main_view();
+  const glm::vec2 px = test::predict_pixel(view.proj * view.view, centre, rig.width, rig.height);
+  const auto at = [&](const Image& image) {
+    const std::size_t i =
+        (static_cast<std::size_t>(px.y) * image.width + static_cast<std::size_t>(px.x)) * 4;
+    return glm::ivec3(image.rgba8[i], image.rgba8[i + 1], image.rgba8[i + 2]);
+  };
+  Effect* effects[] = {probe.get()};
+  const glm::ivec3 before = at(rig.render_effects(effects)); // the anchor's probe ball
+  CHECK(before.g > before.r + 40);                           // the green sphere, lit
+
+  auto bad = probe->set_param("node", std::string("no_such_object"));
+  REQUIRE_FALSE(bad.has_value());
+  CHECK(bad.error().message.find("dynamic_cubemap.node") != std::string::npos);
+  CHECK(bad.error().message.find("no_such_object") != std::string::npos);
+  CHECK(std::get<std::string>(*probe->get_param("node")).empty());
+
+  REQUIRE(probe->set_param("node", std::string("sphere_green")).has_value());
+  const glm::vec3 after = at(rig.render_effects(effects));
+  const Span<const int> drawn = probe->drawn_objects();
+  REQUIRE(drawn.size() == 1);
+  CHECK(drawn[0] == green);
+  // A mirror now: at its centre it reflects what is behind the camera, not green paint.
+  CHECK_FALSE(after.g > after.r + 40);
 }
