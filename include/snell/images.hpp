@@ -146,9 +146,13 @@ public:
   void begin_multiview(VkCommandBuffer cmd, const float clear[4]) const;
   void end_multiview(VkCommandBuffer cmd) const;
   /// Transitions before any face is rendered this frame (all layers to attachment layouts).
-  void begin_capture(VkCommandBuffer cmd) const;
+  /// `keep_contents`: the faces not rendered this time keep their previous contents (a capture
+  /// sliced over frames); otherwise everything is discarded (cheapest). Default false.
+  void begin_capture(VkCommandBuffer cmd, bool keep_contents = false) const;
   /// After the faces: generates mips (when enabled) and leaves the cube SHADER_READ_ONLY.
-  void end_capture(VkCommandBuffer cmd) const;
+  /// `mips`: rebuild the mip chain from level 0 (when the cube has one); false leaves the levels
+  /// above 0 as they were (a slice whose cube is not complete yet). Default true.
+  void end_capture(VkCommandBuffer cmd, bool mips = true) const;
 
   [[nodiscard]] std::uint32_t size() const { return size_; }
   [[nodiscard]] std::uint32_t mip_levels() const { return mips_; }

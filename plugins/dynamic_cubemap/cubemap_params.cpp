@@ -24,6 +24,12 @@ const ParamTable<DynamicCubemapParams>& cubemap_table() {
           .number("z_far", &C::z_far, 0.01f, 1e5f, "m", "Far distance of the capture")
           .enumeration("capture", &C::capture, {"multiview", "six_pass"},
                        "One multiview pass for the six faces, or six passes (seed 002)")
+          .enumeration("refresh", &C::refresh,
+                       {"every_frame", "every_n", "on_demand", "faces_per_frame"},
+                       "When the capture is refreshed (a sliced cube is published whole)")
+          .integer("refresh_n", &C::refresh_n, 1, 1000, "", "Frames between refreshes (every_n)")
+          .integer("faces_per_frame", &C::faces_per_frame, 1, 6, "",
+                   "Faces captured a frame (faces_per_frame)")
           .integer("capture_layers", &C::capture_layers, 0, 255, "",
                    "Objects drawn into the capture (snell::layer bits)")
           .enumeration("surface", &C::surface, {"reflect", "refract", "glass"},

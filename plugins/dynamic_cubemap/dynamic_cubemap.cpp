@@ -67,41 +67,32 @@ public:
   Span<const DebugTarget> debug_targets() const override { return debug_; }
   Span<const int> drawn_objects() const override { return owner_.objects(); }
 
+  void request_update() override { requested_ = true; }
+  std::uint64_t publications() const override { return publications_; }
+
   Result<void> update(const FrameInfo& info) override {
     frame_ = info.frame_index;
     release_.collect(frame_);
-    const auto size = static_cast<std::uint32_t>(params_.value().face_size);
-    if (!cube_ || cube_.size() != size) {
-      CubeTarget cube;
-      SNELL_ASSIGN_OR_RETURN(
-          cube, CubeTarget::create(*ctx_, CubeTargetDesc{.size = size,
-                                                         .color = ColorFormat::rgba16_float,
-                                                         .mips = true,
-                                                         .debug_name = "dynamic_cubemap cube"}));
-      if (cube_) {
-        release_.retire(frame_, std::move(cube_));
-      }
-      cube_ = std::move(cube);
-      sets_.set_image(1, cube_.cube_view(), ctx_->sampler(StandardSampler::linear_clamp));
-      debug_.clear();
-      for (std::uint32_t face = 0; face < 6; ++face) {
-        static const char* const names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
-        debug_.push_back(DebugTarget{.name = std::string("dynamic_cubemap.face") + names[face],
-                                     .kind = DebugKind::cube_face,
-                                     .view = cube_.face_view(face),
-                                     .image = cube_.color_image(),
-                                     .width = size,
-                                     .height = size,
-                                     .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                     .layer = face});
-      }
+    const DynamicCubemapParams& p = params_.value();
+    const auto size = static_cast<std::uint32_t>(p.face_size);
+    SNELL_TRY(fit(front_, size));
+    if (p.refresh == CubemapRefresh::faces_per_frame) {
+      SNELL_TRY(fit(back_, size));
+    } else if (back_) {
+      release_.retire(frame_, std::move(back_)); // no slicing: no back cube
+      back_ = CubeTarget();
+      next_face_ = 0;
     }
+    plan_ = plan(p);
     time_ = info.time;
     return {};
   }
 
   Result<void> record_passes(VkCommandBuffer cmd, const FrameInfo& info,
                              SceneSource& scene) override {
+    if (plan_.faces == 0) {
+      return {};
+    }
     const DynamicCubemapParams& p = params_.value();
     CubeCapture capture;
     capture.name = "dynamic_cubemap.capture";
@@ -117,7 +108,22 @@ public:
                            ctx_->device_info().type != VK_PHYSICAL_DEVICE_TYPE_CPU;
     capture.mode = multiview ? CubeCaptureMode::multiview : CubeCaptureMode::six_pass;
     capture.time = info.time;
-    return record_cube_capture(cmd, scene, cube_, capture, info.timer);
+    capture.faces = plan_.faces;
+    capture.mips = plan_.publish;
+    CubeTarget& into = plan_.into_back ? back_ : front_;
+    SNELL_TRY(record_cube_capture(cmd, scene, into, capture, info.timer));
+    if (plan_.into_back && plan_.publish) {
+      // The back cube is complete (six faces, mips): it becomes the one the surface samples;
+      // the old front, sampled by frames still in flight, is overwritten only by later frames'
+      // captures, which their barriers order after those reads.
+      std::swap(front_, back_);
+      point_at_front();
+    }
+    if (plan_.publish) {
+      ++publications_;
+      requested_ = false;
+    }
+    return {};
   }
 
   Result<void> record_draw(VkCommandBuffer cmd, const FrameInfo& info) override {
@@ -133,7 +139,7 @@ public:
     }
     b.eye = glm::vec4(info.main_view.eye, 1.0f);
     b.optics = glm::vec4(static_cast<float>(p.surface), p.ior, p.roughness,
-                         static_cast<float>(cube_.mip_levels()));
+                         static_cast<float>(front_.mip_levels()));
     b.tint = glm::vec4(p.tint, 1.0f);
     std::uint32_t offset = 0;
     SNELL_ASSIGN_OR_RETURN(offset, ubo_.push(frame_, b));
@@ -149,6 +155,87 @@ public:
   }
 
 private:
+  /// What this frame captures.
+  struct Plan {
+    std::uint32_t faces = 0; ///< Face mask (0: nothing this frame).
+    bool into_back = false;  ///< Into the back cube (a slice) rather than the front.
+    bool publish = false;    ///< The cube is complete after it (mips built, counted).
+  };
+
+  /// The refresh policy's decision for this frame. The first frame, a request and a changed
+  /// size always capture the whole front cube.
+  Plan plan(const DynamicCubemapParams& p) {
+    const bool whole = publications_ == 0 || requested_ || fresh_front_;
+    fresh_front_ = false;
+    ++frames_;
+    if (whole) {
+      next_face_ = 0;
+      return {0x3Fu, false, true};
+    }
+    switch (p.refresh) {
+    case CubemapRefresh::every_frame:
+      return {0x3Fu, false, true};
+    case CubemapRefresh::every_n:
+      return frames_ % static_cast<std::uint64_t>(p.refresh_n) == 0 ? Plan{0x3Fu, false, true}
+                                                                    : Plan{};
+    case CubemapRefresh::on_demand:
+      return {};
+    case CubemapRefresh::faces_per_frame: {
+      const std::uint32_t first = next_face_;
+      const std::uint32_t last =
+          std::min<std::uint32_t>(6u, first + static_cast<std::uint32_t>(p.faces_per_frame));
+      std::uint32_t mask = 0;
+      for (std::uint32_t f = first; f < last; ++f) {
+        mask |= 1u << f;
+      }
+      next_face_ = last % 6u;
+      return {mask, true, last == 6u};
+    }
+    }
+    return {};
+  }
+
+  /// Makes `cube` a cube of `size` (retiring the old one); the front one is then recaptured
+  /// whole and the descriptors point at it.
+  Result<void> fit(CubeTarget& cube, std::uint32_t size) {
+    if (cube && cube.size() == size) {
+      return {};
+    }
+    CubeTarget made;
+    SNELL_ASSIGN_OR_RETURN(
+        made, CubeTarget::create(*ctx_, CubeTargetDesc{.size = size,
+                                                       .color = ColorFormat::rgba16_float,
+                                                       .mips = true,
+                                                       .debug_name = "dynamic_cubemap cube"}));
+    if (cube) {
+      release_.retire(frame_, std::move(cube));
+    }
+    cube = std::move(made);
+    if (&cube == &front_) {
+      fresh_front_ = true;
+      next_face_ = 0;
+      point_at_front();
+    }
+    return {};
+  }
+
+  /// The surface's descriptor and the debug targets follow the front cube.
+  void point_at_front() {
+    sets_.set_image(1, front_.cube_view(), ctx_->sampler(StandardSampler::linear_clamp));
+    debug_.clear();
+    static const char* const names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+    for (std::uint32_t face = 0; face < 6; ++face) {
+      debug_.push_back(DebugTarget{.name = std::string("dynamic_cubemap.face") + names[face],
+                                   .kind = DebugKind::cube_face,
+                                   .view = front_.face_view(face),
+                                   .image = front_.color_image(),
+                                   .width = front_.size(),
+                                   .height = front_.size(),
+                                   .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                   .layer = face});
+    }
+  }
+
   /// The owner's meshes for `node` ("" : the anchor's object, else the effect's own sphere).
   /// Errors name dynamic_cubemap.node and the value.
   Result<Surfaces> take_owner(const std::string& node) const {
@@ -221,7 +308,14 @@ private:
   ParamStore<DynamicCubemapParams> params_{detail::cubemap_table(), DynamicCubemapParams{}};
   std::uint64_t frame_ = 0;
   float time_ = 0.0f;
-  CubeTarget cube_;
+  CubeTarget front_;               ///< The published cube the surface samples.
+  CubeTarget back_;                ///< Slices in progress (faces_per_frame only).
+  Plan plan_;                      ///< This frame's capture.
+  std::uint32_t next_face_ = 0;    ///< The next face a slice draws.
+  std::uint64_t frames_ = 0;       ///< Frames planned so far.
+  std::uint64_t publications_ = 0; ///< Complete cubes published.
+  bool requested_ = false;         ///< request_update() since the last publication.
+  bool fresh_front_ = false;       ///< The front cube was just (re)created: capture it whole.
   Surfaces owner_;
   UniformRing ubo_;
   DescriptorSets sets_;

@@ -131,9 +131,12 @@ void CubeTarget::reset() {
   ctx_ = nullptr;
 }
 
-void CubeTarget::begin_capture(VkCommandBuffer cmd) const {
+void CubeTarget::begin_capture(VkCommandBuffer cmd, bool keep_contents) const {
+  // Kept contents come from SHADER_READ_ONLY_OPTIMAL, where every capture leaves the cube.
+  const VkImageLayout old_color =
+      keep_contents ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
   const ImageBarrier barriers[2] = {
-      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 6, VK_IMAGE_LAYOUT_UNDEFINED,
+      {color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 6, old_color,
        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, detail::kReadStages, VK_ACCESS_2_NONE,
        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT},
@@ -166,14 +169,14 @@ void CubeTarget::end_multiview(VkCommandBuffer cmd) const {
   vkCmdEndRendering(cmd);
 }
 
-void CubeTarget::end_capture(VkCommandBuffer cmd) const {
-  if (mips_ > 1) {
+void CubeTarget::end_capture(VkCommandBuffer cmd, bool mips) const {
+  if (mips_ > 1 && mips) {
     detail::generate_mips(
         cmd, color_, size_, size_, mips_, 6, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     return;
   }
-  detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 6,
+  detail::barrier(cmd, ImageBarrier{color_, VK_IMAGE_ASPECT_COLOR_BIT, 0, mips_, 0, 6,
                                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,

@@ -103,8 +103,10 @@ Result<void> record_cube_capture(VkCommandBuffer cmd, SceneSource& scene, const 
   v.time = capture.time;
   const float clear[4] = {capture.clear.r, capture.clear.g, capture.clear.b, capture.clear.a};
   Result<void> drawn;
-  cube.begin_capture(cmd);
-  if (capture.mode == CubeCaptureMode::multiview) {
+  const std::uint32_t faces = capture.faces & 0x3Fu;
+  const bool all = faces == 0x3Fu;
+  cube.begin_capture(cmd, !all);
+  if (capture.mode == CubeCaptureMode::multiview && all) {
     // Every face view has det +1 and an unflipped projection: one front face for all six.
     v.view = cube_face_view(capture.center, CubeFace::pos_x);
     v.flip_front_face = needs_front_face_flip(v.view, proj);
@@ -117,6 +119,9 @@ Result<void> record_cube_capture(VkCommandBuffer cmd, SceneSource& scene, const 
     cube.end_multiview(cmd);
   } else {
     for (std::uint32_t f = 0; f < 6; ++f) {
+      if ((faces & (1u << f)) == 0) {
+        continue;
+      }
       v.view = cube_face_view(capture.center, static_cast<CubeFace>(f));
       v.flip_front_face = needs_front_face_flip(v.view, proj);
       cube.begin_face(cmd, f, clear);
@@ -127,7 +132,7 @@ Result<void> record_cube_capture(VkCommandBuffer cmd, SceneSource& scene, const 
       }
     }
   }
-  cube.end_capture(cmd);
+  cube.end_capture(cmd, capture.mips);
   return drawn;
 }
 

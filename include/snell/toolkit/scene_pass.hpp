@@ -68,6 +68,12 @@ struct CubeCapture {
   CubeCaptureMode mode = CubeCaptureMode::multiview; ///< Default multiview.
   glm::vec4 clear{0.0f, 0.0f, 0.0f, 1.0f};           ///< Default opaque black.
   float time = 0.0f;                                 ///< Scene time, s. Default 0.
+  /// The faces drawn, one bit per face (bit f = CubeFace f). Default 0x3F (all six). Fewer
+  /// faces (a capture sliced over frames) are drawn one by one; the other faces keep their
+  /// contents and the mips are left alone (build them with the slice that completes the cube).
+  std::uint32_t faces = 0x3F;
+  /// Rebuild the mip chain after drawing. Default true.
+  bool mips = true;
 };
 
 /// Records the six faces of `capture` into `cube` (face f written where direction_to_cube puts

@@ -191,3 +191,98 @@ TEST_CASE("dynamic_cubemap: node attaches the probe to a scene object, unknown n
   // A mirror now: at its centre it reflects what is behind the camera, not green paint.
   CHECK_FALSE(after.g > after.r + 40);
 }
+
+namespace {
+
+/// The pixels of `image` whose eye ray meets the sphere (centre `c`, radius `r`) of `view`.
+std::vector<std::uint8_t> disc_pixels(const Image& image, const SceneView& view, glm::vec3 c,
+                                      float r) {
+  const glm::mat4 inv = glm::inverse(view.proj * view.view);
+  std::vector<std::uint8_t> out;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const glm::vec2 ndc(
+          (static_cast<float>(x) + 0.5f) / static_cast<float>(image.width) * 2.0f - 1.0f,
+          (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height) * 2.0f - 1.0f);
+      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 o = glm::vec3(a) / a.w - c;
+      const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - glm::vec3(a) / a.w);
+      const float bq = glm::dot(o, d);
+      // 0.9 r: away from the silhouette, whose edge pixels blend with the background.
+      if (bq * bq - (glm::dot(o, o) - 0.81f * r * r) > 0.0f) {
+        const std::size_t i = (std::size_t{y} * image.width + x) * 4;
+        out.insert(out.end(), image.rgba8.begin() + static_cast<std::ptrdiff_t>(i),
+                   image.rgba8.begin() + static_cast<std::ptrdiff_t>(i + 3));
+      }
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+// Fails if a slice shows before its cube is complete (the ball would change on a frame that
+// publishes nothing), if a publication is missed, or if every_n / on_demand refresh at other
+// frames. The spheres scene's boxes and torus spin, so every capture (0.5 s apart) differs.
+TEST_CASE("dynamic_cubemap: refresh policies - slices are published whole, every_n, on_demand") {
+  test::GpuFixture gpu;
+  test::FrameRig rig;
+  auto scene = make_builtin_scene("spheres");
+  REQUIRE(scene.has_value());
+  rig.scene = std::move(*scene);
+  rig.camera = rig.scene.cameras.front();
+  rig.width = 256;
+  rig.height = 144;
+  rig.init_frame(gpu.ctx());
+  const Anchor* anchor = rig.scene.find_anchor("probe");
+  REQUIRE(anchor != nullptr);
+  const SceneView view = rig.main_view();
+  auto created = create_dynamic_cubemap(rig.effect_info(gpu.ctx()));
+  REQUIRE_MESSAGE(created.has_value(), (created ? std::string() : created.error().message));
+  std::unique_ptr<DynamicCubemapEffect> probe = std::move(*created);
+  Effect* effects[] = {probe.get()};
+  float time = 0.0f;
+  const auto frame = [&] {
+    time += 0.5f;
+    return disc_pixels(rig.render_effects(effects, time), view, anchor->position,
+                       0.5f * anchor->size.x);
+  };
+
+  SUBCASE("faces_per_frame = 2: a new cube every third frame, never a partial one") {
+    REQUIRE(probe->set_param("refresh", std::string("faces_per_frame")).has_value());
+    REQUIRE(probe->set_param("faces_per_frame", 2).has_value());
+    const std::vector<std::uint64_t> expected = {1, 1, 1, 2, 2, 2, 3};
+    std::vector<std::uint8_t> previous;
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      CAPTURE(k);
+      const std::vector<std::uint8_t> ball = frame();
+      REQUIRE_FALSE(ball.empty());
+      CHECK(probe->publications() == expected[k]);
+      if (k > 0) {
+        const bool published = expected[k] != expected[k - 1];
+        CHECK((ball != previous) == published);
+      }
+      previous = ball;
+    }
+  }
+  SUBCASE("every_n = 3 and on_demand") {
+    REQUIRE(probe->set_param("refresh", std::string("every_n")).has_value());
+    REQUIRE(probe->set_param("refresh_n", 3).has_value());
+    std::vector<std::uint64_t> seen;
+    for (int k = 0; k < 6; ++k) {
+      (void)frame();
+      seen.push_back(probe->publications());
+    }
+    CHECK(seen == std::vector<std::uint64_t>{1, 1, 2, 2, 2, 3});
+    REQUIRE(probe->set_param("refresh", std::string("on_demand")).has_value());
+    const std::vector<std::uint8_t> a = frame();
+    const std::vector<std::uint8_t> b = frame();
+    CHECK(probe->publications() == 3);
+    CHECK(a == b);
+    probe->request_update();
+    const std::vector<std::uint8_t> c = frame();
+    CHECK(probe->publications() == 4);
+    CHECK(c != b);
+  }
+}

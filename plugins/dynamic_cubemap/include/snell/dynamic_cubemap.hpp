@@ -23,6 +23,16 @@ enum class CubemapCaptureMode : std::uint8_t {
   six_pass, ///< Six passes, one per face (seed 002).
 };
 
+/// When the capture is refreshed. Whatever the policy, the first frame captures all six faces,
+/// and the surface never samples a cube whose faces come from different refreshes.
+enum class CubemapRefresh : std::uint8_t {
+  every_frame,     ///< All six faces every frame. Default.
+  every_n,         ///< All six faces every `refresh_n` frames.
+  on_demand,       ///< All six faces when DynamicCubemapEffect::request_update() asks.
+  faces_per_frame, ///< `faces_per_frame` faces a frame into a back cube, published whole (with
+                   ///< its mips) when its six faces are done (time slicing).
+};
+
 /// What the owner's surface shows.
 enum class CubemapSurface : std::uint8_t {
   reflect, ///< A mirror: the capture along reflect(view, normal). Default.
@@ -52,6 +62,12 @@ struct DynamicCubemapParams {
   float z_far = 200.0f;
   /// How the faces are drawn. Default multiview.
   CubemapCaptureMode capture = CubemapCaptureMode::multiview;
+  /// When the capture is refreshed. Default every_frame.
+  CubemapRefresh refresh = CubemapRefresh::every_frame;
+  /// Frames between refreshes for every_n. Default 2. [1, 1000].
+  int refresh_n = 2;
+  /// Faces captured a frame for faces_per_frame. Default 1. [1, 6].
+  int faces_per_frame = 1;
   /// Objects drawn into the capture (snell::layer bits). Default layer::captured (8): the owner
   /// of the probe has no `captured` bit and stays out of its own capture.
   int capture_layers = 8;
@@ -75,6 +91,11 @@ public:
   [[nodiscard]] virtual Result<void> set_params(const DynamicCubemapParams& params) = 0;
   /// The current parameters.
   [[nodiscard]] virtual const DynamicCubemapParams& params() const = 0;
+  /// Asks for a full capture in the next frame (refresh = on_demand; any policy accepts it).
+  virtual void request_update() = 0;
+  /// How many complete cubes have been published so far (one per full capture, one per
+  /// finished slice set): for tests and tools.
+  [[nodiscard]] virtual std::uint64_t publications() const = 0;
 };
 
 /// Creates the effect. Errors: invalid_argument (no context, frames_in_flight outside [1, 16]),
