@@ -37,6 +37,10 @@ const ParamTable<DynamicCubemapParams>& cubemap_table() {
           .number("ior", &C::ior, 1.0f, 3.0f, "", "Index of refraction of the sphere")
           .number("roughness", &C::roughness, 0.0f, 1.0f, "",
                   "Blur: the mip level as a fraction of the cube's levels")
+          .boolean("box_projection", &C::box_projection,
+                   "Parallax-correct lookups inside the box box_min..box_max (a room)")
+          .vec3("box_min", &C::box_min, -1e4f, 1e4f, "m", "Smallest corner of the room")
+          .vec3("box_max", &C::box_max, -1e4f, 1e4f, "m", "Largest corner of the room")
           .color("tint", &C::tint, "Colour multiplying what the surface shows");
   return t;
 }

@@ -10,6 +10,7 @@
 #include <snell/math/bounds.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <string>
 #include <vector>
@@ -21,7 +22,7 @@ namespace {
 struct ProbeBlock {
   glm::mat4 view_proj;
   glm::mat4 model;
-  glm::vec4 eye, optics, tint;
+  glm::vec4 eye, optics, tint, center, box_min, box_max;
 };
 
 class DynamicCubemap final : public DynamicCubemapEffect {
@@ -140,7 +141,10 @@ public:
     b.eye = glm::vec4(info.main_view.eye, 1.0f);
     b.optics = glm::vec4(static_cast<float>(p.surface), p.ior, p.roughness,
                          static_cast<float>(front_.mip_levels()));
-    b.tint = glm::vec4(p.tint, 1.0f);
+    b.tint = glm::vec4(p.tint, p.box_projection ? 1.0f : 0.0f);
+    b.center = glm::vec4(capture_center(time_), 1.0f);
+    b.box_min = glm::vec4(p.box_min, 0.0f);
+    b.box_max = glm::vec4(p.box_max, 0.0f);
     std::uint32_t offset = 0;
     SNELL_ASSIGN_OR_RETURN(offset, ubo_.push(frame_, b));
     pipeline_.bind(cmd);
@@ -276,9 +280,18 @@ private:
     return owner;
   }
 
-  /// Replaces the owner when `next.node` differs (the old meshes retired past the frames in
+  /// Checks the box (box_min < box_max when box_projection is on) and replaces the owner when
+  /// `next.node` differs (the old meshes retired past the frames in
   /// flight); nothing changes on error.
   Result<void> apply_node(const DynamicCubemapParams& next) {
+    if (next.box_projection && !glm::all(glm::lessThan(next.box_min, next.box_max))) {
+      return fail(ErrorCode::invalid_argument,
+                  "dynamic_cubemap.box_max: (" + std::to_string(next.box_max.x) + ", " +
+                      std::to_string(next.box_max.y) + ", " + std::to_string(next.box_max.z) +
+                      ") must exceed box_min (" + std::to_string(next.box_min.x) + ", " +
+                      std::to_string(next.box_min.y) + ", " + std::to_string(next.box_min.z) +
+                      ") on every axis when box_projection is on");
+    }
     if (next.node == params_.value().node) {
       return {};
     }

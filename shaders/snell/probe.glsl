@@ -12,6 +12,18 @@ vec3 probe_lookup(samplerCube probe, vec3 dir, float roughness, float levels) {
   return textureLod(probe, dir, roughness * max(levels - 1.0, 0.0)).rgb;
 }
 
+// Box projection (parallax correction): the capture taken at `center` is the inside of the box
+// box_min..box_max (a room). The ray from the surface point `pos` along `dir` leaves the box at
+// pos + t dir, t the nearest exit over the three slabs; the lookup is aimed from the centre at
+// that point. Exact for what lies on the box's walls; `pos` must be inside the box.
+vec3 probe_box_direction(vec3 pos, vec3 dir, vec3 center, vec3 box_min, vec3 box_max) {
+  vec3 to_max = (box_max - pos) / dir;
+  vec3 to_min = (box_min - pos) / dir;
+  vec3 exits = max(to_max, to_min);
+  float t = min(min(exits.x, exits.y), exits.z);
+  return pos + dir * t - center;
+}
+
 // Mirror reflection of the unit view ray `view` at the unit normal `normal`.
 vec3 probe_reflect(samplerCube probe, vec3 view, vec3 normal, float roughness, float levels) {
   return probe_lookup(probe, reflect(view, normal), roughness, levels);

@@ -15,20 +15,26 @@ void main() {
   if (dot(n, v) > 0.0) {
     n = -n;
   }
+  bool boxed = probe_block.tint.w > 0.5;
   int surface = int(probe_block.optics.x);
   float ior = probe_block.optics.y;
   float roughness = probe_block.optics.z;
   float levels = probe_block.optics.w;
   vec3 color;
+  vec3 mirrored = reflect(v, n);
+  if (boxed) {
+    mirrored = probe_box_direction(in_world, mirrored, probe_block.center.xyz,
+                                   probe_block.box_min.xyz, probe_block.box_max.xyz);
+  }
   if (surface == 0) {
-    color = probe_reflect(probe_cube, v, n, roughness, levels);
+    color = probe_lookup(probe_cube, mirrored, roughness, levels);
   } else {
     vec3 through = probe_refract_sphere(probe_cube, v, n, ior, roughness, levels);
     if (surface == 1) {
       color = through;
     } else {
       float f = fresnel_dielectric(-dot(n, v), 1.0 / ior);
-      color = mix(through, probe_reflect(probe_cube, v, n, roughness, levels), f);
+      color = mix(through, probe_lookup(probe_cube, mirrored, roughness, levels), f);
     }
   }
   out_color = vec4(color * probe_block.tint.rgb, 1.0);

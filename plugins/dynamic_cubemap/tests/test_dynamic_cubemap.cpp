@@ -286,3 +286,105 @@ TEST_CASE("dynamic_cubemap: refresh policies - slices are published whole, every
     CHECK(c != b);
   }
 }
+
+namespace {
+
+/// Centroid of the pixels of a mirror ball (centre `c`, radius `r`) in `view` whose reflected
+/// ray from the surface point hits the box `lo..hi` (the exact mirror image), and of the red
+/// pixels `image` shows on the ball.
+struct BallCentroids {
+  glm::vec2 predicted{0.0f}, observed{0.0f};
+  int predicted_count = 0, observed_count = 0;
+};
+
+BallCentroids ball_centroids(const Image& image, const SceneView& view, glm::vec3 c, float r,
+                             glm::vec3 lo, glm::vec3 hi) {
+  const glm::mat4 inv = glm::inverse(view.proj * view.view);
+  BallCentroids out;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const glm::vec2 ndc(
+          (static_cast<float>(x) + 0.5f) / static_cast<float>(image.width) * 2.0f - 1.0f,
+          (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height) * 2.0f - 1.0f);
+      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 o = glm::vec3(a) / a.w;
+      const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - o);
+      const glm::vec3 oc = o - c;
+      const float bq = glm::dot(oc, d);
+      const float disc = bq * bq - (glm::dot(oc, oc) - r * r);
+      if (disc <= 0.0f) {
+        continue;
+      }
+      const glm::vec3 p = o + d * (-bq - std::sqrt(disc));
+      const glm::vec3 refl = glm::reflect(d, glm::normalize(p - c));
+      if (hits_box(p, refl, lo, hi)) {
+        out.predicted += glm::vec2(x, y);
+        ++out.predicted_count;
+      }
+      const std::size_t i = (std::size_t{y} * image.width + x) * 4;
+      if (image.rgba8[i] > 100 && image.rgba8[i + 1] < 60 && image.rgba8[i + 2] < 60) {
+        out.observed += glm::vec2(x, y);
+        ++out.observed_count;
+      }
+    }
+  }
+  out.predicted /= static_cast<float>(std::max(out.predicted_count, 1));
+  out.observed /= static_cast<float>(std::max(out.observed_count, 1));
+  return out;
+}
+
+} // namespace
+
+// Fails if box projection is not applied or aims from the wrong point. A marker on a room's
+// side wall, a mirror ball 1.5 m from it: with box projection the ball shows the
+// marker where an exact mirror reflection (traced here from the surface point) puts it; without
+// it the cube is treated as infinitely far and the marker shows measurably elsewhere.
+TEST_CASE("dynamic_cubemap: box projection puts a wall marker where the exact mirror does") {
+  test::GpuFixture gpu;
+  ProbeRig rig;
+  rig.scene = test::empty_dark_scene();
+  const int red = test::add_emissive_material(rig.scene, {1.0f, 0.0f, 0.0f});
+  const glm::vec3 marker(2.98f, 1.0f, -1.2f), half(0.02f, 0.3f, 0.3f);
+  test::add_object(rig.scene, test::make_box_mesh(half, red), marker);
+  rig.camera.eye = {0.0f, 1.2f, 2.5f};
+  rig.camera.target = {1.5f, 1.0f, -2.0f};
+  rig.camera.yfov = glm::radians(30.0f);
+  rig.width = 320;
+  rig.height = 240;
+  rig.init_frame(gpu.ctx());
+  auto created = create_dynamic_cubemap(rig.effect_info(gpu.ctx()));
+  REQUIRE(created.has_value());
+  rig.probe = std::move(*created);
+  const glm::vec3 centre(1.5f, 1.0f, -2.0f); // 1.5 m from the marker's wall
+  constexpr float radius = 0.5f;
+  DynamicCubemapParams p;
+  p.center = centre;
+  p.radius = radius;
+  p.box_projection = true;
+  p.box_min = {-3.0f, 0.0f, -3.0f};
+  p.box_max = {3.0f, 3.0f, 3.0f};
+  REQUIRE(rig.probe->set_params(p).has_value());
+  const SceneView view = rig.main_view();
+  const BallCentroids boxed =
+      ball_centroids(rig.render(), view, centre, radius, marker - half, marker + half);
+  INFO("boxed: predicted ", boxed.predicted.x, ", ", boxed.predicted.y, " (", boxed.predicted_count,
+       "), observed ", boxed.observed.x, ", ", boxed.observed.y, " (", boxed.observed_count, ")");
+  REQUIRE(boxed.predicted_count > 4);
+  REQUIRE(boxed.observed_count > 4);
+  CHECK(glm::distance(boxed.predicted, boxed.observed) < 1.5f);
+
+  REQUIRE(rig.probe->set_param("box_projection", false).has_value());
+  const BallCentroids far =
+      ball_centroids(rig.render(), view, centre, radius, marker - half, marker + half);
+  INFO("at infinity: observed ", far.observed.x, ", ", far.observed.y, " (", far.observed_count,
+       ")");
+  CHECK(glm::distance(far.predicted, far.observed) > 3.0f);
+
+  // A box that is not a box is refused and changes nothing.
+  p.box_max = {-4.0f, 3.0f, 3.0f};
+  auto bad = rig.probe->set_params(p);
+  REQUIRE_FALSE(bad.has_value());
+  CHECK(bad.error().message.find("dynamic_cubemap.box_max") != std::string::npos);
+  CHECK_FALSE(rig.probe->params().box_projection);
+}

@@ -79,6 +79,14 @@ struct DynamicCubemapParams {
   /// Blur of the lookups: the mip level, as a fraction of the cube's levels. 0 = sharp.
   /// Default 0. [0, 1].
   float roughness = 0.0f;
+  /// Box projection (parallax correction): the capture is taken as the inside of the world box
+  /// box_min..box_max (a room), so a lookup is aimed at where the ray from the surface point
+  /// leaves the box instead of treating the capture as infinitely far. Default false.
+  bool box_projection = false;
+  /// The room's corners, world units (m); box_min < box_max on every axis when box_projection
+  /// is on. Defaults (-5, 0, -5) and (5, 5, 5). Each in [-1e4, 1e4].
+  glm::vec3 box_min{-5.0f, 0.0f, -5.0f};
+  glm::vec3 box_max{5.0f, 5.0f, 5.0f};
   /// Colour multiplying what the surface shows (a metal's reflectance), linear RGB. Default
   /// (1, 1, 1). Each in [0, 1].
   glm::vec3 tint{1.0f, 1.0f, 1.0f};
