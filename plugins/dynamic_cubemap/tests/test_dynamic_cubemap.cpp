@@ -68,6 +68,37 @@ bool hits_box(glm::vec3 o, glm::vec3 d, glm::vec3 lo, glm::vec3 hi) {
   return t0 <= t1;
 }
 
+/// Calls fn(x, y, p, d) for every pixel (x, y) of a width x height `view` whose eye ray, unit
+/// direction d, meets the sphere (centre `c`, radius `r`); p is the nearer hit.
+template <class F>
+void for_each_sphere_pixel(const SceneView& view, std::uint32_t width, std::uint32_t height,
+                           glm::vec3 c, float r, F&& fn) {
+  const glm::mat4 inv = glm::inverse(view.proj * view.view);
+  for (std::uint32_t y = 0; y < height; ++y) {
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(width) * 2.0f - 1.0f,
+                          (static_cast<float>(y) + 0.5f) / static_cast<float>(height) * 2.0f -
+                              1.0f);
+      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 o = glm::vec3(a) / a.w;
+      const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - o);
+      // |o + t d - c|^2 = r^2.
+      const glm::vec3 oc = o - c;
+      const float bq = glm::dot(oc, d);
+      const float disc = bq * bq - (glm::dot(oc, oc) - r * r);
+      if (disc > 0.0f) {
+        fn(x, y, o + d * (-bq - std::sqrt(disc)), d);
+      }
+    }
+  }
+}
+
+/// True when pixel `i` (RGBA8 index) of `image` is the red marker: red above `min_red`.
+bool is_red(const Image& image, std::size_t i, int min_red) {
+  return image.rgba8[i] > min_red && image.rgba8[i + 1] < 60 && image.rgba8[i + 2] < 60;
+}
+
 } // namespace
 
 // Fails if the surface looked up the wrong direction (no reflection, a flipped cube face, a
@@ -81,39 +112,21 @@ TEST_CASE("dynamic_cubemap: a mirror ball shows a marker where reflect(view, nor
   rig.init(gpu.ctx());
   const Image image = rig.render();
   const SceneView view = rig.main_view();
-  const glm::mat4 inv = glm::inverse(view.proj * view.view);
   glm::vec2 predicted(0.0f), observed(0.0f);
   int predicted_count = 0, observed_count = 0;
-  for (std::uint32_t y = 0; y < rig.height; ++y) {
-    for (std::uint32_t x = 0; x < rig.width; ++x) {
-      const glm::vec2 ndc(
-          (static_cast<float>(x) + 0.5f) / static_cast<float>(rig.width) * 2.0f - 1.0f,
-          (static_cast<float>(y) + 0.5f) / static_cast<float>(rig.height) * 2.0f - 1.0f);
-      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
-      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 o = glm::vec3(a) / a.w;
-      const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - o);
-      // Ray-sphere (centre 0, radius 1): |o + t d|^2 = r^2.
-      const float bq = glm::dot(o, d);
-      const float disc = bq * bq - (glm::dot(o, o) - kRadius * kRadius);
-      if (disc <= 0.0f) {
-        continue;
-      }
-      const glm::vec3 p = o + d * (-bq - std::sqrt(disc));
-      const glm::vec3 n = glm::normalize(p);
-      const glm::vec3 r = glm::reflect(d, n);
-      const std::size_t i = (std::size_t{y} * rig.width + x) * 4;
-      const bool red = image.rgba8[i] > 128 && image.rgba8[i + 1] < 60 && image.rgba8[i + 2] < 60;
-      if (red) {
-        observed += glm::vec2(x, y);
-        ++observed_count;
-      }
-      if (hits_box(glm::vec3(0.0f), r, kMarker - kMarkerHalf, kMarker + kMarkerHalf)) {
-        predicted += glm::vec2(x, y);
-        ++predicted_count;
-      }
-    }
-  }
+  for_each_sphere_pixel(
+      view, rig.width, rig.height, glm::vec3(0.0f), kRadius,
+      [&](std::uint32_t x, std::uint32_t y, glm::vec3 p, glm::vec3 d) {
+        const glm::vec3 r = glm::reflect(d, glm::normalize(p));
+        if (is_red(image, (std::size_t{y} * rig.width + x) * 4, 128)) {
+          observed += glm::vec2(x, y);
+          ++observed_count;
+        }
+        if (hits_box(glm::vec3(0.0f), r, kMarker - kMarkerHalf, kMarker + kMarkerHalf)) {
+          predicted += glm::vec2(x, y);
+          ++predicted_count;
+        }
+      });
   REQUIRE(predicted_count > 4);
   REQUIRE(observed_count > 4);
   predicted /= static_cast<float>(predicted_count);
@@ -197,26 +210,14 @@ namespace {
 /// The pixels of `image` whose eye ray meets the sphere (centre `c`, radius `r`) of `view`.
 std::vector<std::uint8_t> disc_pixels(const Image& image, const SceneView& view, glm::vec3 c,
                                       float r) {
-  const glm::mat4 inv = glm::inverse(view.proj * view.view);
   std::vector<std::uint8_t> out;
-  for (std::uint32_t y = 0; y < image.height; ++y) {
-    for (std::uint32_t x = 0; x < image.width; ++x) {
-      const glm::vec2 ndc(
-          (static_cast<float>(x) + 0.5f) / static_cast<float>(image.width) * 2.0f - 1.0f,
-          (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height) * 2.0f - 1.0f);
-      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
-      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 o = glm::vec3(a) / a.w - c;
-      const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - glm::vec3(a) / a.w);
-      const float bq = glm::dot(o, d);
-      // 0.9 r: away from the silhouette, whose edge pixels blend with the background.
-      if (bq * bq - (glm::dot(o, o) - 0.81f * r * r) > 0.0f) {
-        const std::size_t i = (std::size_t{y} * image.width + x) * 4;
-        out.insert(out.end(), image.rgba8.begin() + static_cast<std::ptrdiff_t>(i),
-                   image.rgba8.begin() + static_cast<std::ptrdiff_t>(i + 3));
-      }
-    }
-  }
+  // 0.9 r: away from the silhouette, whose edge pixels blend with the background.
+  for_each_sphere_pixel(
+      view, image.width, image.height, c, 0.9f * r,
+      [&](std::uint32_t x, std::uint32_t y, glm::vec3, glm::vec3) {
+        const auto i = static_cast<std::ptrdiff_t>((std::size_t{y} * image.width + x) * 4);
+        out.insert(out.end(), image.rgba8.begin() + i, image.rgba8.begin() + i + 3);
+      });
   return out;
 }
 
@@ -299,36 +300,19 @@ struct BallCentroids {
 
 BallCentroids ball_centroids(const Image& image, const SceneView& view, glm::vec3 c, float r,
                              glm::vec3 lo, glm::vec3 hi) {
-  const glm::mat4 inv = glm::inverse(view.proj * view.view);
   BallCentroids out;
-  for (std::uint32_t y = 0; y < image.height; ++y) {
-    for (std::uint32_t x = 0; x < image.width; ++x) {
-      const glm::vec2 ndc(
-          (static_cast<float>(x) + 0.5f) / static_cast<float>(image.width) * 2.0f - 1.0f,
-          (static_cast<float>(y) + 0.5f) / static_cast<float>(image.height) * 2.0f - 1.0f);
-      const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
-      const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 o = glm::vec3(a) / a.w;
-      const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - o);
-      const glm::vec3 oc = o - c;
-      const float bq = glm::dot(oc, d);
-      const float disc = bq * bq - (glm::dot(oc, oc) - r * r);
-      if (disc <= 0.0f) {
-        continue;
-      }
-      const glm::vec3 p = o + d * (-bq - std::sqrt(disc));
-      const glm::vec3 refl = glm::reflect(d, glm::normalize(p - c));
-      if (hits_box(p, refl, lo, hi)) {
-        out.predicted += glm::vec2(x, y);
-        ++out.predicted_count;
-      }
-      const std::size_t i = (std::size_t{y} * image.width + x) * 4;
-      if (image.rgba8[i] > 100 && image.rgba8[i + 1] < 60 && image.rgba8[i + 2] < 60) {
-        out.observed += glm::vec2(x, y);
-        ++out.observed_count;
-      }
-    }
-  }
+  for_each_sphere_pixel(view, image.width, image.height, c, r,
+                        [&](std::uint32_t x, std::uint32_t y, glm::vec3 p, glm::vec3 d) {
+                          const glm::vec3 refl = glm::reflect(d, glm::normalize(p - c));
+                          if (hits_box(p, refl, lo, hi)) {
+                            out.predicted += glm::vec2(x, y);
+                            ++out.predicted_count;
+                          }
+                          if (is_red(image, (std::size_t{y} * image.width + x) * 4, 100)) {
+                            out.observed += glm::vec2(x, y);
+                            ++out.observed_count;
+                          }
+                        });
   out.predicted /= static_cast<float>(std::max(out.predicted_count, 1));
   out.observed /= static_cast<float>(std::max(out.observed_count, 1));
   return out;
