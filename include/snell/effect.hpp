@@ -25,6 +25,7 @@
 
 namespace snell {
 
+class CaptureBudget;
 class Context;
 class GpuTimer;
 class SceneSnapshot;
@@ -135,6 +136,10 @@ struct EffectCreateInfo {
   /// Optional scene: effects read anchors ("water", "window", "probe"), nodes and the light from
   /// it. Must outlive the effect. Default none.
   const Scene* scene = nullptr;
+  /// Optional: the host's per-frame budget of cube-face captures, shared by every probe it is
+  /// given to (dynamic_cubemap): stalest and nearest probes first, each cube published whole.
+  /// Must outlive the effect. Default none: each probe follows its own refresh policy.
+  CaptureBudget* capture_budget = nullptr;
 };
 
 /// A reflection/refraction effect. Per frame, in the phases of DESIGN.md ("Frame phases"):

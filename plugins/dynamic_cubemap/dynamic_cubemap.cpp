@@ -7,11 +7,13 @@
 
 #include "snell_dynamic_cubemap_shaders.hpp"
 
+#include <snell/capture_budget.hpp>
 #include <snell/math/bounds.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vector_relational.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,7 @@ public:
     ctx_ = info.context;
     scene_ = info.scene;
     release_ = DeferredRelease(info.frames_in_flight);
+    budget_ = info.capture_budget;
     if (scene_ != nullptr) {
       if (const Anchor* a = scene_->find_anchor("probe")) {
         params_.value().center = a->position;
@@ -70,6 +73,7 @@ public:
 
   void request_update() override { requested_ = true; }
   std::uint64_t publications() const override { return publications_; }
+  std::uint32_t faces_captured() const override { return faces_captured_; }
 
   Result<void> update(const FrameInfo& info) override {
     frame_ = info.frame_index;
@@ -77,24 +81,41 @@ public:
     const DynamicCubemapParams& p = params_.value();
     const auto size = static_cast<std::uint32_t>(p.face_size);
     SNELL_TRY(fit(front_, size));
-    if (p.refresh == CubemapRefresh::faces_per_frame) {
-      SNELL_TRY(fit(back_, size));
-    } else if (back_) {
-      release_.retire(frame_, std::move(back_)); // no slicing: no back cube
-      back_ = CubeTarget();
-      next_face_ = 0;
-    }
-    plan_ = plan(p);
     time_ = info.time;
+    ++frames_;
+    wanted_ = wanted_faces(p);
+    ticket_.reset();
+    if (budget_ != nullptr && wanted_ != 0 && !whole_) {
+      const float distance = glm::length(capture_center(info.time) - info.main_view.eye);
+      // A requested update declares the cube outdated: as stale as a cube can be.
+      const std::uint64_t age = requested_ ? ~std::uint64_t{0} : frames_ - published_frame_;
+      ticket_ = budget_->request(frame_, CaptureBudget::Request{wanted_, age, distance});
+    }
+    // Slices (a policy or a budget may leave a round unfinished) go into a back cube, published
+    // whole; without slicing there is none.
+    const bool slices = p.refresh == CubemapRefresh::faces_per_frame || budget_ != nullptr;
+    if (slices) {
+      SNELL_TRY(fit(back_, size));
+    } else if (back_ && done_ == 0) {
+      release_.retire(frame_, std::move(back_));
+      back_ = CubeTarget();
+    }
     return {};
   }
 
   Result<void> record_passes(VkCommandBuffer cmd, const FrameInfo& info,
                              SceneSource& scene) override {
-    if (plan_.faces == 0) {
+    std::uint32_t faces = wanted_;
+    if (ticket_) {
+      faces = budget_->grant(frame_, *ticket_);
+    }
+    if (faces == 0) {
       return {};
     }
     const DynamicCubemapParams& p = params_.value();
+    // The whole cube at once goes straight into the front cube; slices into the back one.
+    const bool direct = whole_ || (faces == 0x3Fu && done_ == 0) || !back_;
+    const bool publish = direct || (done_ | faces) == 0x3Fu;
     CubeCapture capture;
     capture.name = "dynamic_cubemap.capture";
     capture.center = capture_center(info.time);
@@ -109,20 +130,28 @@ public:
                            ctx_->device_info().type != VK_PHYSICAL_DEVICE_TYPE_CPU;
     capture.mode = multiview ? CubeCaptureMode::multiview : CubeCaptureMode::six_pass;
     capture.time = info.time;
-    capture.faces = plan_.faces;
-    capture.mips = plan_.publish;
-    CubeTarget& into = plan_.into_back ? back_ : front_;
-    SNELL_TRY(record_cube_capture(cmd, scene, into, capture, info.timer));
-    if (plan_.into_back && plan_.publish) {
-      // The back cube is complete (six faces, mips): it becomes the one the surface samples;
-      // the old front, sampled by frames still in flight, is overwritten only by later frames'
-      // captures, which their barriers order after those reads.
-      std::swap(front_, back_);
-      point_at_front();
+    capture.faces = direct ? 0x3Fu : faces;
+    capture.mips = publish;
+    SNELL_TRY(record_cube_capture(cmd, scene, direct ? front_ : back_, capture, info.timer));
+    faces_captured_ = capture.faces;
+    if (direct) {
+      done_ = 0; // a round in the back cube is superseded by the fresher front
+    } else {
+      done_ |= faces;
+      if (publish) {
+        // The back cube is complete (six faces, mips): it becomes the one the surface samples;
+        // the old front, sampled by frames still in flight, is overwritten only by later
+        // frames' captures, which their barriers order after those reads.
+        std::swap(front_, back_);
+        point_at_front();
+        done_ = 0;
+      }
     }
-    if (plan_.publish) {
+    if (publish) {
       ++publications_;
+      published_frame_ = frames_;
       requested_ = false;
+      whole_ = false;
     }
     return {};
   }
@@ -159,44 +188,44 @@ public:
   }
 
 private:
-  /// What this frame captures.
-  struct Plan {
-    std::uint32_t faces = 0; ///< Face mask (0: nothing this frame).
-    bool into_back = false;  ///< Into the back cube (a slice) rather than the front.
-    bool publish = false;    ///< The cube is complete after it (mips built, counted).
-  };
-
-  /// The refresh policy's decision for this frame. The first frame, a request and a changed
-  /// size always capture the whole front cube.
-  Plan plan(const DynamicCubemapParams& p) {
-    const bool whole = publications_ == 0 || requested_ || fresh_front_;
-    fresh_front_ = false;
-    ++frames_;
-    if (whole) {
-      next_face_ = 0;
-      return {0x3Fu, false, true};
+  /// The faces the refresh policy wants this frame (a budget may grant fewer): all six the
+  /// first time, after a request or a resize (`whole_`), else those of the round in progress
+  /// when a refresh is due.
+  std::uint32_t wanted_faces(const DynamicCubemapParams& p) {
+    // Without a budget a request is served at once; with one it competes as the stalest.
+    whole_ = whole_ || publications_ == 0 || (requested_ && budget_ == nullptr);
+    faces_captured_ = 0;
+    if (whole_) {
+      return 0x3Fu;
     }
+    const std::uint32_t remaining = 0x3Fu & ~done_;
+    bool due = done_ != 0 || requested_;
     switch (p.refresh) {
     case CubemapRefresh::every_frame:
-      return {0x3Fu, false, true};
+    case CubemapRefresh::faces_per_frame:
+      due = true;
+      break;
     case CubemapRefresh::every_n:
-      return frames_ % static_cast<std::uint64_t>(p.refresh_n) == 0 ? Plan{0x3Fu, false, true}
-                                                                    : Plan{};
+      due = due || frames_ - published_frame_ >= static_cast<std::uint64_t>(p.refresh_n);
+      break;
     case CubemapRefresh::on_demand:
-      return {};
-    case CubemapRefresh::faces_per_frame: {
-      const std::uint32_t first = next_face_;
-      const std::uint32_t last =
-          std::min<std::uint32_t>(6u, first + static_cast<std::uint32_t>(p.faces_per_frame));
-      std::uint32_t mask = 0;
-      for (std::uint32_t f = first; f < last; ++f) {
+      break;
+    }
+    if (!due) {
+      return 0;
+    }
+    if (p.refresh != CubemapRefresh::faces_per_frame) {
+      return remaining;
+    }
+    std::uint32_t mask = 0; // the lowest `faces_per_frame` faces still to draw
+    int left = p.faces_per_frame;
+    for (std::uint32_t f = 0; f < 6 && left > 0; ++f) {
+      if ((remaining & (1u << f)) != 0) {
         mask |= 1u << f;
+        --left;
       }
-      next_face_ = last % 6u;
-      return {mask, true, last == 6u};
     }
-    }
-    return {};
+    return mask;
   }
 
   /// Makes `cube` a cube of `size` (retiring the old one); the front one is then recaptured
@@ -216,9 +245,11 @@ private:
     }
     cube = std::move(made);
     if (&cube == &front_) {
-      fresh_front_ = true;
-      next_face_ = 0;
+      whole_ = true;
+      done_ = 0;
       point_at_front();
+    } else {
+      done_ = 0;
     }
     return {};
   }
@@ -321,14 +352,18 @@ private:
   ParamStore<DynamicCubemapParams> params_{detail::cubemap_table(), DynamicCubemapParams{}};
   std::uint64_t frame_ = 0;
   float time_ = 0.0f;
-  CubeTarget front_;               ///< The published cube the surface samples.
-  CubeTarget back_;                ///< Slices in progress (faces_per_frame only).
-  Plan plan_;                      ///< This frame's capture.
-  std::uint32_t next_face_ = 0;    ///< The next face a slice draws.
-  std::uint64_t frames_ = 0;       ///< Frames planned so far.
-  std::uint64_t publications_ = 0; ///< Complete cubes published.
-  bool requested_ = false;         ///< request_update() since the last publication.
-  bool fresh_front_ = false;       ///< The front cube was just (re)created: capture it whole.
+  CubeTarget front_;                      ///< The published cube the surface samples.
+  CubeTarget back_;                       ///< Slices in progress (faces_per_frame or a budget).
+  CaptureBudget* budget_ = nullptr;       ///< The host's shared face budget, if any.
+  std::optional<std::uint32_t> ticket_{}; ///< This frame's budget request.
+  std::uint32_t wanted_ = 0;              ///< Faces the policy wants this frame.
+  std::uint32_t done_ = 0;                ///< Faces of the back cube's round drawn so far.
+  std::uint32_t faces_captured_ = 0;      ///< Faces drawn this frame.
+  std::uint64_t frames_ = 0;              ///< Frames updated so far.
+  std::uint64_t published_frame_ = 0;     ///< frames_ at the last publication.
+  std::uint64_t publications_ = 0;        ///< Complete cubes published.
+  bool requested_ = false;                ///< request_update() since the last publication.
+  bool whole_ = false; ///< Capture all six faces into the front now (first, resized, ...).
   Surfaces owner_;
   UniformRing ubo_;
   DescriptorSets sets_;

@@ -33,6 +33,15 @@ Result<std::uint32_t> parse_uint(const std::string& text, const std::string& wha
 
 } // namespace
 
+std::pair<std::string, std::uint32_t> split_instance(const std::string& effect) {
+  const auto at = effect.find('@');
+  if (at == std::string::npos) {
+    return {effect, 0u};
+  }
+  auto k = parse_uint(effect.substr(at + 1), "instance", 1, 100000);
+  return {effect.substr(0, at), k ? *k : 0u};
+}
+
 Result<glm::vec3> parse_vec3(const std::string& text, const std::string& what) {
   std::vector<std::string> parts;
   std::stringstream ss(text);
@@ -80,7 +89,10 @@ render options:
   --validation        enable the Khronos validation layer (also SNELL_VALIDATION=1)
   --effect NAME       add an effect (repeatable; see `snell list`), e.g. --effect water
   --set E.KEY=VALUE   set a parameter of effect E (repeatable); vectors as x,y or x,y,z,
-                      e.g. --set water.wave_height=0 --set water.center=0,0
+                      e.g. --set water.wave_height=0 --set water.center=0,0; E@K sets only
+                      the K-th --effect E, e.g. --set dynamic_cubemap@2.surface=glass
+  --capture-budget N  cube faces all probes (dynamic_cubemap) together capture a frame,
+                      stalest and nearest first, 0..10000 [none: each probe on its own]
 
 bench options (as render, plus):
   --frames N          frames of each kind (plain, with effects), >= 3 [60]
@@ -150,6 +162,12 @@ Result<Command> parse(const std::vector<std::string>& args) {
                     "--set: '" + v + "' must be EFFECT.KEY=VALUE, e.g. water.wave_height=0.5");
       }
       o.sets.push_back({v.substr(0, dot), v.substr(dot + 1, eq - dot - 1), v.substr(eq + 1)});
+    } else if (a == "--capture-budget") {
+      auto n = parse_uint(v, a, 0, 10000);
+      if (!n) {
+        return n.error();
+      }
+      o.capture_budget = *n;
     } else if (a == "--size") {
       const auto x = v.find('x');
       if (x == std::string::npos) {
@@ -210,10 +228,18 @@ Result<Command> parse(const std::vector<std::string>& args) {
     return fail(ErrorCode::invalid_argument, "bench: --frames must be at least 3");
   }
   for (const auto& set : o.sets) {
-    if (std::find(o.effects.begin(), o.effects.end(), set[0]) == o.effects.end()) {
+    const auto [name, instance] = split_instance(set[0]);
+    const auto count = std::count(o.effects.begin(), o.effects.end(), name);
+    if (count == 0) {
       return fail(ErrorCode::invalid_argument, "--set " + set[0] + "." + set[1] + ": effect '" +
-                                                   set[0] + "' is not enabled (add --effect " +
-                                                   set[0] + ")");
+                                                   name + "' is not enabled (add --effect " + name +
+                                                   ")");
+    }
+    if (set[0] != name && (instance < 1 || instance > count)) {
+      return fail(ErrorCode::invalid_argument,
+                  "--set " + set[0] + "." + set[1] + ": instance '" + set[0].substr(name.size()) +
+                      "' must be @1..@" + std::to_string(count) + " (--effect " + name +
+                      " is given " + std::to_string(count) + " time(s))");
     }
   }
   return cmd;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace snell::cli {
@@ -28,8 +29,11 @@ struct RenderOptions {
   std::string device;                   ///< --device lavapipe|gpu|NAME.
   bool validation = false;              ///< --validation.
   std::vector<std::string> effects;     ///< --effect NAME (repeatable), in order.
-  /// --set EFFECT.KEY=VALUE (repeatable): (effect, key, value text), checked against the schema.
+  /// --set EFFECT[@K].KEY=VALUE (repeatable): (effect, key, value text), checked against the
+  /// schema; "EFFECT@K" sets only the K-th (1-based) --effect EFFECT, plain "EFFECT" every one.
   std::vector<std::array<std::string, 3>> sets;
+  /// --capture-budget N: cube faces all probes together capture a frame (CaptureBudget).
+  std::optional<std::uint32_t> capture_budget;
   std::string json; ///< bench: --json FILE.
 };
 
@@ -45,6 +49,8 @@ struct Command {
 /// The --help text.
 [[nodiscard]] std::string help_text();
 
+/// Splits "EFFECT@K" of --set into the effect name and K (0 when there is no "@K").
+[[nodiscard]] std::pair<std::string, std::uint32_t> split_instance(const std::string& effect);
 /// Parses "x,y,z" (finite numbers) for `what`.
 [[nodiscard]] Result<glm::vec3> parse_vec3(const std::string& text, const std::string& what);
 

@@ -4,6 +4,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace snell::cli {
@@ -75,8 +76,11 @@ Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_
                   "--effect: unknown effect '" + name + "'; registered effects: " + known);
     }
     plan.push_back({name, {}});
+    const auto instance = static_cast<std::uint32_t>(
+        std::count_if(plan.begin(), plan.end(), [&](const auto& e) { return e.first == name; }));
     for (const auto& set : o.sets) {
-      if (set[0] != name) {
+      // "name" sets every instance, "name@K" only the K-th (K checked by the parser).
+      if (set[0] != name && set[0] != name + "@" + std::to_string(instance)) {
         continue;
       }
       const ParamSpec* spec = schema->find(set[1]);
@@ -125,6 +129,10 @@ Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_
   info.color_format = s->frame->target().vk_color_format();
   info.depth_format = VK_FORMAT_D32_SFLOAT;
   info.scene = &s->scene;
+  if (o.capture_budget) {
+    s->budget.emplace(*o.capture_budget);
+    info.capture_budget = &*s->budget;
+  }
   for (const auto& [name, values] : plan) {
     auto effect = s->registry.create(name, info);
     if (!effect) {

@@ -3,6 +3,7 @@
 
 #include "cli_args.hpp"
 
+#include <snell/capture_budget.hpp>
 #include <snell/effect.hpp>
 #include <snell/frame.hpp>
 #include <snell/scene_renderer.hpp>
@@ -19,6 +20,7 @@ struct Session {
   std::optional<Context> ctx;
   std::optional<SceneRenderer> renderer;
   std::optional<FrameRenderer> frame;
+  std::optional<CaptureBudget> budget; ///< --capture-budget, shared by the probes.
   std::vector<std::unique_ptr<Effect>> effects;
   CameraDesc camera;
 

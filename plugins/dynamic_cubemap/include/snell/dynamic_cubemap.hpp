@@ -24,7 +24,9 @@ enum class CubemapCaptureMode : std::uint8_t {
 };
 
 /// When the capture is refreshed. Whatever the policy, the first frame captures all six faces,
-/// and the surface never samples a cube whose faces come from different refreshes.
+/// and the surface never samples a cube whose faces come from different refreshes. Under a
+/// capture budget (EffectCreateInfo::capture_budget, shared by the host's probes) a due refresh
+/// is drawn as far as the budget grants, into a back cube published when its six faces are done.
 enum class CubemapRefresh : std::uint8_t {
   every_frame,     ///< All six faces every frame. Default.
   every_n,         ///< All six faces every `refresh_n` frames.
@@ -99,11 +101,15 @@ public:
   [[nodiscard]] virtual Result<void> set_params(const DynamicCubemapParams& params) = 0;
   /// The current parameters.
   [[nodiscard]] virtual const DynamicCubemapParams& params() const = 0;
-  /// Asks for a full capture in the next frame (refresh = on_demand; any policy accepts it).
+  /// Asks for a full capture (refresh = on_demand; any policy accepts it): in the next frame,
+  /// or, under a capture budget (EffectCreateInfo::capture_budget), as the stalest probe.
   virtual void request_update() = 0;
   /// How many complete cubes have been published so far (one per full capture, one per
   /// finished slice set): for tests and tools.
   [[nodiscard]] virtual std::uint64_t publications() const = 0;
+  /// The faces drawn by the last record_passes(), one bit per face (bit f = CubeFace f): 0x3F
+  /// for a full capture, fewer for a slice, 0 when nothing was due or granted.
+  [[nodiscard]] virtual std::uint32_t faces_captured() const = 0;
 };
 
 /// Creates the effect. Errors: invalid_argument (no context, frames_in_flight outside [1, 16]),
