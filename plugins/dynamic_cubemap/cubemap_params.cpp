@@ -35,6 +35,8 @@ const ParamTable<DynamicCubemapParams>& cubemap_table() {
           .enumeration("surface", &C::surface, {"reflect", "refract", "glass"},
                        "Mirror, refraction through a solid sphere, or both by Fresnel")
           .number("ior", &C::ior, 1.0f, 3.0f, "", "Index of refraction of the sphere")
+          .number("dispersion", &C::dispersion, 0.0f, 2.0f, "",
+                  "Per-channel IOR spread, 20 / Abbe number (refract, glass)")
           .number("roughness", &C::roughness, 0.0f, 1.0f, "",
                   "Blur: the mip level as a fraction of the cube's levels")
           .boolean("box_projection", &C::box_projection,

@@ -13,6 +13,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vector_relational.hpp>
 
+#include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,12 +50,9 @@ public:
                                        .frames_in_flight = info.frames_in_flight,
                                        .label = "dynamic_cubemap surface"},
                                       ubo_, sets_));
-    SNELL_ASSIGN_OR_RETURN(
-        pipeline_,
-        Pipeline::create(*ctx_, surface_pipeline_desc(info, "dynamic_cubemap surface pipeline",
-                                                      dynamic_cubemap::shaders::probe_surface_vert,
-                                                      dynamic_cubemap::shaders::probe_surface_frag,
-                                                      {sets_.layout()})));
+    pipeline_desc_ = surface_pipeline_desc(
+        info, "dynamic_cubemap surface pipeline", dynamic_cubemap::shaders::probe_surface_vert,
+        dynamic_cubemap::shaders::probe_surface_frag, {sets_.layout()});
     return {};
   }
 
@@ -82,6 +81,7 @@ public:
     const auto size = static_cast<std::uint32_t>(p.face_size);
     SNELL_TRY(fit(front_, size));
     time_ = info.time;
+    SNELL_TRY(pick_variant(p));
     ++frames_;
     wanted_ = wanted_faces(p);
     ticket_.reset();
@@ -168,16 +168,15 @@ public:
       b.model = glm::scale(glm::translate(glm::mat4(1.0f), p.center), glm::vec3(2.0f * p.radius));
     }
     b.eye = glm::vec4(info.main_view.eye, 1.0f);
-    b.optics = glm::vec4(static_cast<float>(p.surface), p.ior, p.roughness,
-                         static_cast<float>(front_.mip_levels()));
-    b.tint = glm::vec4(p.tint, p.box_projection ? 1.0f : 0.0f);
+    b.optics = glm::vec4(p.dispersion, p.ior, p.roughness, static_cast<float>(front_.mip_levels()));
+    b.tint = glm::vec4(p.tint, 1.0f);
     b.center = glm::vec4(capture_center(time_), 1.0f);
     b.box_min = glm::vec4(p.box_min, 0.0f);
     b.box_max = glm::vec4(p.box_max, 0.0f);
     std::uint32_t offset = 0;
     SNELL_ASSIGN_OR_RETURN(offset, ubo_.push(frame_, b));
-    pipeline_.bind(cmd);
-    sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), frame_, &offset, 1);
+    pipeline_->bind(cmd);
+    sets_.bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->layout(), frame_, &offset, 1);
     vkCmdSetCullMode(cmd, VK_CULL_MODE_BACK_BIT);
     const bool mirrored = glm::determinant(glm::mat3(b.model)) < 0.0f;
     vkCmdSetFrontFace(cmd, mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
@@ -188,6 +187,27 @@ public:
   }
 
 private:
+  /// Points pipeline_ at the surface's shader variant (specialization constants: the surface
+  /// mode, box projection, dispersion), created the first time it is used.
+  Result<void> pick_variant(const DynamicCubemapParams& p) {
+    const bool reflects = p.surface != CubemapSurface::refract;
+    const bool refracts = p.surface != CubemapSurface::reflect;
+    const std::array<std::uint32_t, 3> constants = {static_cast<std::uint32_t>(p.surface),
+                                                    reflects && p.box_projection ? 1u : 0u,
+                                                    refracts && p.dispersion > 0.0f ? 1u : 0u};
+    const std::uint32_t key = constants[0] | constants[1] << 4 | constants[2] << 5;
+    auto found = pipelines_.find(key);
+    if (found == pipelines_.end()) {
+      GraphicsPipelineDesc desc = pipeline_desc_;
+      desc.constants.assign(constants.begin(), constants.end());
+      Pipeline made;
+      SNELL_ASSIGN_OR_RETURN(made, Pipeline::create(*ctx_, desc));
+      found = pipelines_.emplace(key, std::move(made)).first;
+    }
+    pipeline_ = &found->second;
+    return {};
+  }
+
   /// The faces the refresh policy wants this frame (a budget may grant fewer): all six the
   /// first time, after a request or a resize (`whole_`), else those of the round in progress
   /// when a refresh is due.
@@ -367,7 +387,9 @@ private:
   Surfaces owner_;
   UniformRing ubo_;
   DescriptorSets sets_;
-  Pipeline pipeline_;
+  GraphicsPipelineDesc pipeline_desc_;
+  std::map<std::uint32_t, Pipeline> pipelines_; ///< Surface variants by their constants.
+  const Pipeline* pipeline_ = nullptr;          ///< This frame's variant.
   std::vector<DebugTarget> debug_;
 };
 

@@ -44,4 +44,11 @@ float f0_from_ior(float n1, float n2) {
   return r * r;
 }
 
+// Per-channel indices of refraction for dispersion (KHR_materials_dispersion: `dispersion` =
+// 20 / Abbe number): (red, green, blue) = ior -/+ half of (ior - 1) dispersion / 20.
+vec3 dispersion_iors(float ior, float dispersion) {
+  float half_spread = (ior - 1.0) * dispersion * 0.025;
+  return vec3(ior - half_spread, ior, ior + half_spread);
+}
+
 #endif

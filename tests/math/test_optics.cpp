@@ -194,3 +194,15 @@ TEST_CASE("slab_lateral_shift: reference values, ray tracing through both faces,
     previous = shift;
   }
 }
+
+// Fails if the spread or its sign is off: BK7 (n_d 1.5168, Abbe number 64.17) has n_F - n_C =
+// 0.00806 (Schott: n_F 1.52238, n_C 1.51432); red bends less than blue.
+TEST_CASE("dispersion_iors: KHR_materials_dispersion's spread, BK7 reference") {
+  const glm::vec3 n = snell::dispersion_iors(1.5168f, 20.0f / 64.17f);
+  CHECK(n.g == 1.5168f);
+  CHECK(n.b - n.r == doctest::Approx(0.00806).epsilon(0.01));
+  CHECK(n.r < n.g);
+  CHECK(n.g < n.b);
+  CHECK(snell::dispersion_iors(1.5f, 0.0f) == glm::vec3(1.5f));
+  CHECK(snell::dispersion_iors(1.0f, 1.0f) == glm::vec3(1.0f)); // vacuum does not disperse
+}

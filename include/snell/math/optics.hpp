@@ -131,4 +131,17 @@ inline constexpr float diamond = 2.417f;
   return thickness * (sin_i * cos_t - cos_i * sin_t) / cos_t;
 }
 
+/// Per-channel indices of refraction for dispersion, as KHR_materials_dispersion defines it:
+/// `dispersion` = 20 / V_d, V_d the Abbe number (n_d - 1) / (n_F - n_C), so the spread between
+/// the blue F line (486 nm) and the red C line (656 nm) is n_F - n_C = (ior - 1) dispersion / 20;
+/// red gets ior minus half of it, green ior, blue ior plus half.
+///
+/// @param ior index of refraction at the d line (587.6 nm), >= 1.
+/// @param dispersion 20 / V_d, >= 0 (0: none; crown glass BK7 ~0.31, flint glass SF11 ~0.78).
+/// @return (n_red, n_green, n_blue).
+[[nodiscard]] inline glm::vec3 dispersion_iors(float ior, float dispersion) noexcept {
+  const float half_spread = (ior - 1.0f) * dispersion * 0.025f;
+  return {ior - half_spread, ior, ior + half_spread};
+}
+
 } // namespace snell

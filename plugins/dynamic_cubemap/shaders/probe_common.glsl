@@ -7,8 +7,8 @@ layout(set = 0, binding = 0, std140) uniform ProbeBlock {
   mat4 view_proj; // the main view
   mat4 model;     // the owner's object to world
   vec4 eye;       // xyz world eye
-  vec4 optics;    // x surface (0 reflect, 1 refract, 2 glass), y ior, z roughness, w mip levels
-  vec4 tint;      // rgb; w 1 = box projection
+  vec4 optics;    // x dispersion, y ior, z roughness, w mip levels
+  vec4 tint;      // rgb
   vec4 center;    // xyz the capture's centre
   vec4 box_min;   // xyz
   vec4 box_max;   // xyz

@@ -269,10 +269,10 @@ void main() {
   vec3 color;
   if (has(kDispersion) && s.params.x > 0.0) {
     // KHR_materials_dispersion: red below, blue above the base IOR.
-    float half_spread = (ior - 1.0) * 0.025 * s.params.x;
-    color.r = radiance(s, n, v, ior - half_spread, offset, tex, uv0).r;
-    color.g = radiance(s, n, v, ior, offset, tex, uv0).g;
-    color.b = radiance(s, n, v, ior + half_spread, offset, tex, uv0).b;
+    vec3 iors = dispersion_iors(ior, s.params.x);
+    color.r = radiance(s, n, v, iors.r, offset, tex, uv0).r;
+    color.g = radiance(s, n, v, iors.g, offset, tex, uv0).g;
+    color.b = radiance(s, n, v, iors.b, offset, tex, uv0).b;
   } else {
     color = radiance(s, n, v, ior, offset, tex, uv0);
   }

@@ -78,6 +78,10 @@ struct DynamicCubemapParams {
   /// Index of refraction of the sphere for refract and glass (seed 002: air 1.0, water 1.33,
   /// glass 1.51). Default 1.51. [1, 3].
   float ior = 1.51f;
+  /// Dispersion of refract and glass, 20 / Abbe number as KHR_materials_dispersion defines it:
+  /// red, green and blue refract with snell::dispersion_iors(ior, dispersion). 0 = none
+  /// (default; one lookup instead of three). [0, 2] (flint glass SF11: ~0.78).
+  float dispersion = 0.0f;
   /// Blur of the lookups: the mip level, as a fraction of the cube's levels. 0 = sharp.
   /// Default 0. [0, 1].
   float roughness = 0.0f;
