@@ -28,6 +28,7 @@ namespace snell {
 class CaptureBudget;
 class Context;
 class GpuTimer;
+class ProbeDirectory;
 class SceneSnapshot;
 struct Scene;
 
@@ -140,6 +141,10 @@ struct EffectCreateInfo {
   /// given to (dynamic_cubemap): stalest and nearest probes first, each cube published whole.
   /// Must outlive the effect. Default none: each probe follows its own refresh policy.
   CaptureBudget* capture_budget = nullptr;
+  /// Optional: the host's list of published probes. Probes (dynamic_cubemap) publish their
+  /// cubes in it; glass reflects the nearest one instead of the sky. Must outlive the effect.
+  /// Default none.
+  ProbeDirectory* probes = nullptr;
 };
 
 /// A reflection/refraction effect. Per frame, in the phases of DESIGN.md ("Frame phases"):

@@ -9,6 +9,7 @@
 
 #include <snell/capture_budget.hpp>
 #include <snell/math/bounds.hpp>
+#include <snell/probe_directory.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vector_relational.hpp>
@@ -31,11 +32,21 @@ struct ProbeBlock {
 
 class DynamicCubemap final : public DynamicCubemapEffect {
 public:
+  DynamicCubemap() = default;
+  DynamicCubemap(const DynamicCubemap&) = delete;
+  DynamicCubemap& operator=(const DynamicCubemap&) = delete;
+  ~DynamicCubemap() override {
+    if (directory_ != nullptr) {
+      directory_->withdraw(this);
+    }
+  }
+
   Result<void> init(const EffectCreateInfo& info) {
     ctx_ = info.context;
     scene_ = info.scene;
     release_ = DeferredRelease(info.frames_in_flight);
     budget_ = info.capture_budget;
+    directory_ = info.probes;
     if (scene_ != nullptr) {
       if (const Anchor* a = scene_->find_anchor("probe")) {
         params_.value().center = a->position;
@@ -152,7 +163,9 @@ public:
       published_frame_ = frames_;
       requested_ = false;
       whole_ = false;
+      published_center_ = capture.center;
     }
+    list_in_directory();
     return {};
   }
 
@@ -187,6 +200,23 @@ public:
   }
 
 private:
+  /// Publishes the front cube in the host's ProbeDirectory (when given) for other effects and
+  /// host materials: its view, the centre it was captured at, the box.
+  void list_in_directory() {
+    if (directory_ == nullptr || publications_ == 0) {
+      return;
+    }
+    const DynamicCubemapParams& p = params_.value();
+    directory_->publish(this, ProbeView{.cube = front_.cube_view(),
+                                        .sampler = ctx_->sampler(StandardSampler::linear_clamp),
+                                        .mip_levels = front_.mip_levels(),
+                                        .center = published_center_,
+                                        .box_projection = p.box_projection,
+                                        .box_min = p.box_min,
+                                        .box_max = p.box_max,
+                                        .publications = publications_});
+  }
+
   /// Points pipeline_ at the surface's shader variant (specialization constants: the surface
   /// mode, box projection, dispersion), created the first time it is used.
   Result<void> pick_variant(const DynamicCubemapParams& p) {
@@ -375,6 +405,8 @@ private:
   CubeTarget front_;                      ///< The published cube the surface samples.
   CubeTarget back_;                       ///< Slices in progress (faces_per_frame or a budget).
   CaptureBudget* budget_ = nullptr;       ///< The host's shared face budget, if any.
+  ProbeDirectory* directory_ = nullptr;   ///< The host's list of probes, if any.
+  glm::vec3 published_center_{0.0f};      ///< Where the front cube was captured.
   std::optional<std::uint32_t> ticket_{}; ///< This frame's budget request.
   std::uint32_t wanted_ = 0;              ///< Faces the policy wants this frame.
   std::uint32_t done_ = 0;                ///< Faces of the back cube's round drawn so far.

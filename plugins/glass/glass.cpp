@@ -5,6 +5,7 @@
 
 #include <snell/math.hpp>
 #include <snell/plugin.hpp>
+#include <snell/probe_directory.hpp>
 
 #include "snell_glass_shaders.hpp"
 
@@ -32,6 +33,7 @@ struct GlassBlock {
   glm::mat4 view_proj;
   glm::mat4 inv_view_proj;
   glm::vec4 eye, extent, light_dir, light_color, ambient, sky_zenith, sky_horizon, sky_ground, mode;
+  glm::vec4 probe_center, probe_box_min, probe_box_max;
   SurfaceRecord surfaces[kMaxSurfaces];
 };
 
@@ -42,7 +44,15 @@ struct DrawBlock {
   SurfaceRecord self; ///< == GlassBlock::surfaces[index.x]
 };
 
-enum Binding : std::uint32_t { kUniforms, kBackground, kBackgroundDepth, kNormals, kColors, kDraw };
+enum Binding : std::uint32_t {
+  kUniforms,
+  kBackground,
+  kBackgroundDepth,
+  kNormals,
+  kColors,
+  kDraw,
+  kProbeCube
+};
 
 /// One surface of this frame: what to draw and its optics.
 struct Drawn {
@@ -64,6 +74,7 @@ enum Feature : std::uint32_t {
   kTextured = 4u,
   kRough = 8u,
   kDispersion = 16u,
+  kProbe = 32u,
 };
 
 /// True when two pixel rectangles share a pixel.
@@ -104,6 +115,7 @@ public:
     ctx_ = info.context;
     scene_ = info.scene;
     frames_in_flight_ = info.frames_in_flight;
+    probes_ = info.probes;
     release_ = DeferredRelease(info.frames_in_flight);
     if (scene_ != nullptr) {
       SNELL_TRY(take_scene_objects());
@@ -128,7 +140,8 @@ public:
          .images = 4,
          .extra = {{.binding = kDraw,
                     .type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
-                    .stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}},
+                    .stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {.binding = kProbeCube}},
          .frames_in_flight = frames_in_flight_,
          .label = "glass surfaces"},
         ubo_, sets_));
@@ -136,6 +149,16 @@ public:
     const VkSampler repeat = ctx_->sampler(StandardSampler::linear_repeat);
     sets_.set_image(kNormals, normal_map_.view(), repeat);
     sets_.set_image(kColors, color_map_.view(), repeat);
+    // Bound while no probe is: the variants without kProbe never read it.
+    SNELL_ASSIGN_OR_RETURN(no_probe_,
+                           CubeTarget::create(*ctx_, CubeTargetDesc{
+                                                         .size = 1,
+                                                         .mips = false,
+                                                         .debug_name = "glass no-probe cube",
+                                                     }));
+    sets_.set_image(kProbeCube, no_probe_.cube_view(),
+                    ctx_->sampler(StandardSampler::linear_clamp));
+    bound_probe_view_ = no_probe_.cube_view();
     pipeline_desc_ =
         surface_pipeline_desc(info, "glass surface pipeline", glass::shaders::glass_vert,
                               glass::shaders::glass_frag, {sets_.layout()});
@@ -239,6 +262,25 @@ public:
     for (std::size_t i = 0; i < drawn_.size(); ++i) {
       b.surfaces[i] = drawn_[i].record;
     }
+    // The probe nearest to the surfaces (published this frame in phase 2), if any.
+    const ProbeView* probe = nullptr;
+    if (probes_ != nullptr) {
+      glm::vec3 middle(0.0f);
+      for (const Drawn& d : drawn_) {
+        middle += glm::vec3(d.record.center) / static_cast<float>(drawn_.size());
+      }
+      probe = probes_->nearest(middle);
+    }
+    const VkImageView probe_view = probe != nullptr ? probe->cube : no_probe_.cube_view();
+    if (probe_view != bound_probe_view_) { // re-pointed only when it changes
+      sets_.set_image(kProbeCube, probe_view, probe != nullptr ? probe->sampler : clamp);
+      bound_probe_view_ = probe_view;
+    }
+    if (probe != nullptr) {
+      b.probe_center = glm::vec4(probe->center, static_cast<float>(probe->mip_levels));
+      b.probe_box_min = glm::vec4(probe->box_min, probe->box_projection ? 1.0f : 0.0f);
+      b.probe_box_max = glm::vec4(probe->box_max, 0.0f);
+    }
     std::uint32_t offset = 0;
     SNELL_ASSIGN_OR_RETURN(offset, ubo_.push(frame_, b));
     // Farthest first: a nearer surface is drawn over a farther one, and sees it by tracing.
@@ -256,7 +298,9 @@ public:
                            glm::uvec4(static_cast<std::uint32_t>(i),
                                       static_cast<std::uint32_t>(drawn_.size()), layers, 0u),
                            d.record};
-      const Pipeline& pipeline = pipelines_.at(d.variant);
+      const Pipeline* variant = nullptr;
+      SNELL_ASSIGN_OR_RETURN(variant, pipeline_for(d.variant | (probe != nullptr ? kProbe : 0u)));
+      const Pipeline& pipeline = *variant;
       if (&pipeline != bound) {
         pipeline.bind(cmd);
         bound = &pipeline;
@@ -292,17 +336,24 @@ private:
         }
       }
       d.variant = features | modes;
-      if (pipelines_.count(d.variant) != 0) {
-        continue;
-      }
-      GraphicsPipelineDesc desc = pipeline_desc_;
-      desc.constants = {features, static_cast<std::uint32_t>(params_.value().debug_view),
-                        params_.value().fresnel == GlassFresnel::exact ? 1u : 0u};
-      Pipeline pipeline;
-      SNELL_ASSIGN_OR_RETURN(pipeline, Pipeline::create(*ctx_, desc));
-      pipelines_.emplace(d.variant, std::move(pipeline));
+      SNELL_TRY(pipeline_for(d.variant));
     }
     return {};
+  }
+
+  /// The pipeline of `variant` (features | debug view << 8 | fresnel << 12), built the first
+  /// time it is asked for. kProbe is added in record_draw, once the probes have published.
+  Result<const Pipeline*> pipeline_for(std::uint32_t variant) {
+    auto found = pipelines_.find(variant);
+    if (found == pipelines_.end()) {
+      GraphicsPipelineDesc desc = pipeline_desc_;
+      desc.constants = {variant & 0xFFu, variant >> 8 & 0xFu,
+                        (variant >> 12 & 0xFu) == 0 ? 1u : 0u};
+      Pipeline pipeline;
+      SNELL_ASSIGN_OR_RETURN(pipeline, Pipeline::create(*ctx_, desc));
+      found = pipelines_.emplace(variant, std::move(pipeline)).first;
+    }
+    return &found->second;
   }
 
   /// Uploads the scene's transmissive objects (transmission > 0) once.
@@ -508,8 +559,11 @@ private:
   UniformRing ubo_;
   UniformRing draws_; ///< One DrawBlock per surface drawn.
   DescriptorSets sets_;
-  GraphicsPipelineDesc pipeline_desc_;          ///< The surface pipeline, unspecialised.
-  std::map<std::uint32_t, Pipeline> pipelines_; ///< Built variants by key (Drawn::variant).
+  GraphicsPipelineDesc pipeline_desc_;            ///< The surface pipeline, unspecialised.
+  std::map<std::uint32_t, Pipeline> pipelines_;   ///< Built variants by key (Drawn::variant).
+  ProbeDirectory* probes_ = nullptr;              ///< The host's probes, if any.
+  CubeTarget no_probe_;                           ///< Bound while no probe is published.
+  VkImageView bound_probe_view_ = VK_NULL_HANDLE; ///< What kProbeCube points at.
   Surfaces pane_, scene_surfaces_;
   std::vector<DebugTarget> debug_;
 };

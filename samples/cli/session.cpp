@@ -129,6 +129,7 @@ Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_
   info.color_format = s->frame->target().vk_color_format();
   info.depth_format = VK_FORMAT_D32_SFLOAT;
   info.scene = &s->scene;
+  info.probes = &s->probes;
   if (o.capture_budget) {
     s->budget.emplace(*o.capture_budget);
     info.capture_budget = &*s->budget;

@@ -6,6 +6,7 @@
 #include <snell/capture_budget.hpp>
 #include <snell/effect.hpp>
 #include <snell/frame.hpp>
+#include <snell/probe_directory.hpp>
 #include <snell/scene_renderer.hpp>
 
 #include <memory>
@@ -21,6 +22,7 @@ struct Session {
   std::optional<SceneRenderer> renderer;
   std::optional<FrameRenderer> frame;
   std::optional<CaptureBudget> budget; ///< --capture-budget, shared by the probes.
+  ProbeDirectory probes;               ///< Probes published for the other effects.
   std::vector<std::unique_ptr<Effect>> effects;
   CameraDesc camera;
 

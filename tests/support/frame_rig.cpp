@@ -11,12 +11,13 @@ void FrameRig::init_frame(Context& ctx) {
   frame.emplace(std::move(*f));
 }
 
-EffectCreateInfo FrameRig::effect_info(Context& ctx) const {
+EffectCreateInfo FrameRig::effect_info(Context& ctx) {
   EffectCreateInfo info;
   info.context = &ctx;
   info.color_format = frame->target().vk_color_format();
   info.depth_format = frame->target().depth_format();
   info.scene = &scene;
+  info.probes = &probes;
   return info;
 }
 

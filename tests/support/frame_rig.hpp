@@ -6,6 +6,7 @@
 
 #include <snell/effect.hpp>
 #include <snell/frame.hpp>
+#include <snell/probe_directory.hpp>
 #include <snell/scene_renderer.hpp>
 
 #include <optional>
@@ -18,14 +19,15 @@ struct FrameRig {
   std::optional<SceneRenderer> renderer;
   std::optional<FrameRenderer> frame;
   FrameStats last_stats; ///< Of the last render_effects().
+  ProbeDirectory probes; ///< Handed to effects (EffectCreateInfo::probes).
   CameraDesc camera;
   std::uint32_t width = 256, height = 192;
   ColorFormat color = ColorFormat::rgba8_unorm;
 
   /// Builds the renderer and the frame; call after scene, camera, size and colour are set.
   void init_frame(Context& ctx);
-  /// The create info of an effect drawn into this frame: context, formats, scene.
-  [[nodiscard]] EffectCreateInfo effect_info(Context& ctx) const;
+  /// The create info of an effect drawn into this frame: context, formats, scene, probes.
+  [[nodiscard]] EffectCreateInfo effect_info(Context& ctx);
   /// One frame with `effects` (none: the opaque scene) at `time` seconds, read back as RGBA8;
   /// REQUIREs that the frame and every effect succeeded.
   Image render_effects(Span<Effect* const> effects, float time = 0.0f);

@@ -7,6 +7,7 @@
 // through a pane stays visible although the snapshot holds neither.
 #extension GL_GOOGLE_include_directive : require
 #include "snell/optics.glsl"
+#include "snell/probe.glsl"
 #include "snell/sky.glsl"
 #include "glass_common.glsl"
 
@@ -99,8 +100,18 @@ Crossing cross_surface(GlassSurface s, vec3 p, vec3 n, vec3 v, float ior, vec4 t
   c.fresnel = kFresnelExact != 0u ? fresnel_dielectric(cos_i, eta) : 0.0;
   vec3 r = reflect(v, n);
   float highlight = pow(max(dot(r, -glass.light_dir.xyz), 0.0), glass.light_color.w);
-  c.reflected = sky_gradient(r, glass.sky_zenith.rgb, glass.sky_horizon.rgb, glass.sky_ground.rgb) +
-                highlight * glass.light_dir.w * glass.light_color.rgb;
+  vec3 environment;
+  if (has(kProbe)) { // the scene around, as the nearest probe captured it
+    vec3 dir = r;
+    if (glass.probe_box_min.w > 0.5) {
+      dir = probe_box_direction(p, r, glass.probe_center.xyz, glass.probe_box_min.xyz,
+                                glass.probe_box_max.xyz);
+    }
+    environment = probe_lookup(probe_cube, dir, s.normal.w, glass.probe_center.w);
+  } else {
+    environment = sky_gradient(r, glass.sky_zenith.rgb, glass.sky_horizon.rgb, glass.sky_ground.rgb);
+  }
+  c.reflected = environment + highlight * glass.light_dir.w * glass.light_color.rgb;
   c.transmit = s.tint.rgb * absorb;
   // KHR_materials_transmission: the untransmitted part is the base colour, lit diffusely.
   float transmission = s.tint.a;

@@ -30,6 +30,9 @@ layout(set = 0, binding = 0, std140) uniform GlassBlock {
   vec4 sky_horizon;   // rgb
   vec4 sky_ground;    // rgb
   vec4 mode;          // w log2 of the background's larger side (xyz unused)
+  vec4 probe_center;  // the probe reflected (kProbe): xyz capture centre; w mip levels
+  vec4 probe_box_min; // xyz room corner; w 1 = box projection
+  vec4 probe_box_max; // xyz room corner
   GlassSurface surfaces[kMaxSurfaces];
 } glass;
 
@@ -49,6 +52,7 @@ const uint kLayers = 2u;     // rays may cross other surfaces (more than one, ma
 const uint kTextured = 4u;   // a normal-map offset or colour texture
 const uint kRough = 8u;      // blurred background levels
 const uint kDispersion = 16u; // per-channel IOR
+const uint kProbe = 32u;      // reflections from a probe's cube (ProbeDirectory), not the sky
 
 bool has(uint feature) {
   return (kFeatures & feature) != 0u;
@@ -67,5 +71,6 @@ layout(set = 0, binding = 1) uniform sampler2D background;       // opaque colou
 layout(set = 0, binding = 2) uniform sampler2D background_depth; // its depth (nearest)
 layout(set = 0, binding = 3) uniform sampler2D normal_map;       // pane: tangent-space normals
 layout(set = 0, binding = 4) uniform sampler2D color_map;        // pane: colour texture (sRGB)
+layout(set = 0, binding = 6) uniform samplerCube probe_cube;     // kProbe: the nearest probe
 
 #endif
