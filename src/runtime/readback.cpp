@@ -212,7 +212,7 @@ Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& targ
     break;
   case VK_FORMAT_D32_SFLOAT: {
     auto bytes = read_subresource(*context_state(ctx), target.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                                  target.width, target.height, 0, 0, 4);
+                                  target.width, target.height, target.mip, target.layer, 4);
     if (!bytes) {
       return bytes.error();
     }
@@ -228,9 +228,9 @@ Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& targ
                                             "' has a format Snell cannot read back (" +
                                             std::to_string(static_cast<int>(target.format)) + ")");
   }
-  auto bytes =
-      read_subresource(*context_state(ctx), target.image, VK_IMAGE_ASPECT_COLOR_BIT, target.width,
-                       target.height, 0, 0, format == ColorFormat::rgba16_float ? 8 : 4);
+  auto bytes = read_subresource(*context_state(ctx), target.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                                target.width, target.height, target.mip, target.layer,
+                                format == ColorFormat::rgba16_float ? 8 : 4);
   if (!bytes) {
     return bytes.error();
   }

@@ -1,6 +1,6 @@
 // Cube capture: six coloured markers on the six axes land on their faces where
 // direction_to_cube predicts, with the per-face path and the multiview path.
-#include "gpu_fixture.hpp"
+#include "cube_markers.hpp"
 
 #include <snell/math.hpp>
 #include <snell/toolkit/scene_pass.hpp>
@@ -9,45 +9,16 @@ using namespace snell;
 
 namespace {
 
-const glm::vec3 kColors[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}};
-
-Scene marker_scene(glm::vec3 center, glm::vec3 offsets[6]) {
-  Scene scene = test::empty_dark_scene();
-  for (int f = 0; f < 6; ++f) {
-    const glm::vec3 axis = cube_face_forward(static_cast<CubeFace>(f));
-    // Off the face centre on purpose, so a mirrored or rotated face would misplace it.
-    const glm::vec3 side =
-        glm::vec3(axis.y != 0 ? 0.9f : 0.0f, axis.y == 0 ? 0.7f : 0.0f, axis.x != 0 ? -0.8f : 0.6f);
-    offsets[f] = 3.0f * axis + side;
-    test::add_object(
-        scene,
-        test::make_box_mesh(glm::vec3(0.12f), test::add_emissive_material(scene, kColors[f])),
-        center + offsets[f]);
-  }
-  return scene;
-}
-
-void check_faces(Context& ctx, const CubeTarget& cube, const glm::vec3 offsets[6],
+void check_faces(Context& ctx, const CubeTarget& cube, const std::array<glm::vec3, 6>& offsets,
                  const char* name) {
-  const float size = static_cast<float>(cube.size());
-  for (std::uint32_t f = 0; f < 6; ++f) {
-    auto image = read_cube_face_rgba8(ctx, cube, f);
-    REQUIRE(image.has_value());
-    test::save_png(*image, std::string(name) + "_face" + std::to_string(f));
-    const CubeTexel expected = direction_to_cube(offsets[f]);
-    REQUIRE(static_cast<std::uint32_t>(expected.face) == f);
-    const test::Blob blob = test::find_color(*image, kColors[f]);
-    CAPTURE(f);
-    CAPTURE(blob.centroid);
-    CAPTURE(expected.uv * size);
-    REQUIRE(blob.count > 4);
-    CHECK(glm::length(blob.centroid - expected.uv * size) <= 1.0f);
-    for (std::uint32_t other = 0; other < 6; ++other) { // no marker on the wrong face
-      if (other != f) {
-        CHECK(test::find_color(*image, kColors[other]).count == 0);
-      }
-    }
-  }
+  test::check_marker_faces(
+      [&](std::uint32_t f) {
+        auto image = read_cube_face_rgba8(ctx, cube, f);
+        REQUIRE(image.has_value());
+        test::save_png(*image, std::string(name) + "_face" + std::to_string(f));
+        return *image;
+      },
+      static_cast<float>(cube.size()), offsets);
 }
 
 } // namespace
@@ -55,8 +26,8 @@ void check_faces(Context& ctx, const CubeTarget& cube, const glm::vec3 offsets[6
 TEST_CASE("cube capture: per-face passes put each marker where direction_to_cube says") {
   test::GpuFixture gpu;
   const glm::vec3 center(0.5f, 1.0f, -0.25f);
-  glm::vec3 offsets[6];
-  const Scene scene = marker_scene(center, offsets);
+  std::array<glm::vec3, 6> offsets;
+  const Scene scene = test::six_marker_scene(center, offsets);
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE(renderer.has_value());
   auto cube = CubeTarget::create(
@@ -91,8 +62,8 @@ TEST_CASE("cube capture: per-face passes put each marker where direction_to_cube
 TEST_CASE("cube capture: one multiview pass matches the per-face result") {
   test::GpuFixture gpu;
   const glm::vec3 center(0.0f, 0.0f, 0.0f);
-  glm::vec3 offsets[6];
-  const Scene scene = marker_scene(center, offsets);
+  std::array<glm::vec3, 6> offsets;
+  const Scene scene = test::six_marker_scene(center, offsets);
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE(renderer.has_value());
   auto cube = CubeTarget::create(
@@ -127,8 +98,8 @@ TEST_CASE("cube capture: one multiview pass matches the per-face result") {
 TEST_CASE("cube capture: the toolkit's record_cube_capture, multiview and six passes alike") {
   test::GpuFixture gpu;
   const glm::vec3 center(0.25f, -0.5f, 0.5f);
-  glm::vec3 offsets[6];
-  const Scene scene = marker_scene(center, offsets);
+  std::array<glm::vec3, 6> offsets;
+  const Scene scene = test::six_marker_scene(center, offsets);
   auto renderer = SceneRenderer::create(gpu.ctx(), scene);
   REQUIRE(renderer.has_value());
   for (const CubeCaptureMode mode : {CubeCaptureMode::multiview, CubeCaptureMode::six_pass}) {
