@@ -26,12 +26,12 @@
 
 namespace snell {
 
-/// Names accepted by make_builtin_scene, in a fixed order: {"pool", "window", "spheres"}.
+/// Names accepted by make_builtin_scene, in a fixed order: {"pool", "window", "spheres", "room"}.
 [[nodiscard]] std::vector<std::string_view> builtin_scene_names();
 
 /// The built-in scene called `name` (case-sensitive, one of builtin_scene_names()).
 /// Unknown name: Error{ErrorCode::unknown_name, "unknown scene 'x'; built-in scenes: pool,
-/// window, spheres"}.
+/// window, spheres, room"}.
 [[nodiscard]] Result<Scene> make_builtin_scene(std::string_view name);
 
 /// Seed 000's water scene: a raised pool in a courtyard.
@@ -80,6 +80,20 @@ namespace snell {
 /// - camera 0: eye (5, 3.4, 7.5) looking at (0, 1.4, 0), 45 degree vertical field of view;
 /// - light from behind the camera, warm evening sky (a colourful environment to reflect).
 [[nodiscard]] Scene make_spheres_scene();
+/// A closed room for box projection (parallax-corrected probes): its inside is exactly the
+/// dynamic_cubemap's default box (-5, 0, -5)..(5, 5, 5).
+/// - floor: 10 x 10 m checker plane at y = 0; walls: 0.2 m boxes whose inner faces are x = +-5
+///   (right blue, left green), z = -5 (bricks), z = 5 (plaster); ceiling: inner face at y = 5;
+/// - on the right wall (x = 5): a yellow painting (1 x 1.4 m, centre (4.98, 1.8, -2)) and a red
+///   one (1.2 x 0.8 m, centre (4.98, 2, 1.2)), 2 cm proud of the wall;
+/// - probe sphere: radius 0.7 at (2.8, 1.1, -0.4) on a pedestal, 2.2 m from the right wall,
+///   silver, layers without `captured`; anchor "probe" as in the spheres scene;
+/// - an orange box at (-2.5, 0.4, -2.5);
+/// - camera 0: eye (4.7, 1.6, 0.9) near the right wall, looking at (2.8, 1, -0.4), 50 degree
+///   vertical field of view: the ball shows the right wall and its paintings behind the camera,
+///   where box projection's correction is large;
+/// - light from above (no shadows: the ceiling does not block it).
+[[nodiscard]] Scene make_room_scene();
 
 // --- Procedural textures ---------------------------------------------------------------------
 // All generators are deterministic and tileable where stated; they reject arguments out of

@@ -92,7 +92,7 @@ CameraDesc camera(glm::vec3 eye, glm::vec3 target, float yfov_deg) {
 } // namespace
 
 std::vector<std::string_view> builtin_scene_names() {
-  return {"pool", "window", "spheres"};
+  return {"pool", "window", "spheres", "room"};
 }
 
 Result<Scene> make_builtin_scene(std::string_view name) {
@@ -104,6 +104,9 @@ Result<Scene> make_builtin_scene(std::string_view name) {
   }
   if (name == "spheres") {
     return make_spheres_scene();
+  }
+  if (name == "room") {
+    return make_room_scene();
   }
   std::string known;
   for (std::string_view n : builtin_scene_names()) {
@@ -313,6 +316,62 @@ Scene make_spheres_scene() {
   s.light.ambient = {0.24f, 0.24f, 0.30f};
   s.sky.zenith = {0.12f, 0.28f, 0.70f};
   s.sky.horizon = {0.92f, 0.72f, 0.52f};
+  s.sky.ground = {0.26f, 0.23f, 0.20f};
+  return s;
+}
+
+Scene make_room_scene() {
+  Scene s;
+  s.name = "room";
+  const int checker_img = add_image(
+      s, make_checker_image(256, 8, {0.86f, 0.84f, 0.80f}, {0.20f, 0.22f, 0.26f}), "floor_checker");
+  const int brick_img = add_image(s, make_brick_image(512, BrickPattern{}), "bricks");
+  add_object(s, "floor", detail::make_plane({10.0f, 10.0f}, 4, 1.0f),
+             add_material(s, textured("floor", checker_img, glm::vec2(0.5f), 0.6f, 0.3f)),
+             at({0.0f, 0.0f, 0.0f}));
+  // Walls and ceiling: 0.2 m boxes whose inner faces are the room's box (-5, 0, -5)..(5, 5, 5).
+  constexpr float half = 5.0f, height = 5.0f, t = 0.2f;
+  add_object(s, "wall_back", detail::make_box({2.0f * half, height, t}, 1.0f),
+             add_material(s, textured("bricks", brick_img, glm::vec2(0.5f))),
+             at({0.0f, 0.5f * height, -half - 0.5f * t}));
+  add_object(s, "wall_front", detail::make_box({2.0f * half, height, t}, 1.0f),
+             add_material(s, plain("plaster", {0.80f, 0.78f, 0.74f}, 0.8f, 0.1f)),
+             at({0.0f, 0.5f * height, half + 0.5f * t}));
+  add_object(s, "wall_right", detail::make_box({t, height, 2.0f * half}, 1.0f),
+             add_material(s, plain("blue_paint", {0.18f, 0.32f, 0.70f}, 0.7f, 0.2f)),
+             at({half + 0.5f * t, 0.5f * height, 0.0f}));
+  add_object(s, "wall_left", detail::make_box({t, height, 2.0f * half}, 1.0f),
+             add_material(s, plain("green_paint", {0.22f, 0.55f, 0.25f}, 0.7f, 0.2f)),
+             at({-half - 0.5f * t, 0.5f * height, 0.0f}));
+  add_object(s, "ceiling", detail::make_box({2.0f * half, t, 2.0f * half}, 1.0f),
+             add_material(s, plain("ceiling", {0.90f, 0.90f, 0.88f}, 0.9f, 0.0f)),
+             at({0.0f, height + 0.5f * t, 0.0f}));
+  // Two paintings on the right wall, 2 cm proud of it: bright markers for box projection.
+  add_object(s, "painting_yellow", detail::make_box({0.04f, 1.0f, 1.4f}, 1.0f),
+             add_material(s, plain("yellow", {0.95f, 0.80f, 0.10f}, 0.5f, 0.2f)),
+             at({half - 0.02f, 1.8f, -2.0f}));
+  add_object(s, "painting_red", detail::make_box({0.04f, 1.2f, 0.8f}, 1.0f),
+             add_material(s, plain("red", {0.85f, 0.12f, 0.08f}, 0.5f, 0.2f)),
+             at({half - 0.02f, 2.0f, 1.2f}));
+  add_object(s, "pedestal", detail::make_cylinder(0.35f, 0.4f),
+             add_material(s, plain("stone", {0.50f, 0.50f, 0.52f}, 0.7f, 0.2f)),
+             at({2.8f, 0.2f, -0.4f}));
+  // The probe owner, 2.2 m from the right wall: no `captured` bit (see the header).
+  const glm::vec3 centre(2.8f, 1.1f, -0.4f);
+  constexpr float radius = 0.7f;
+  const int probe = add_object(s, "probe_sphere", detail::make_sphere(radius, 64, 32),
+                               add_material(s, plain("silver", {0.90f, 0.91f, 0.93f}, 0.05f, 1.0f)),
+                               at(centre), layer::all & ~layer::captured);
+  add_object(s, "box_orange", detail::make_box(glm::vec3(0.8f)),
+             add_material(s, plain("orange", {0.95f, 0.45f, 0.08f}, 0.4f)),
+             at({-2.5f, 0.4f, -2.5f}, 25.0f * degrees, {0, 1, 0}));
+  s.anchors.push_back(Anchor{"probe", centre, glm::vec3(2.0f * radius), probe});
+  s.cameras.push_back(camera({4.7f, 1.6f, 0.9f}, {2.8f, 1.0f, -0.4f}, 50.0f));
+  s.light.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+  s.light.color = {1.0f, 0.96f, 0.90f};
+  s.light.ambient = {0.30f, 0.30f, 0.32f};
+  s.sky.zenith = {0.12f, 0.28f, 0.70f};
+  s.sky.horizon = {0.80f, 0.82f, 0.86f};
   s.sky.ground = {0.26f, 0.23f, 0.20f};
   return s;
 }

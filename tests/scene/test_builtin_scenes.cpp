@@ -75,10 +75,11 @@ glm::vec3 cross_plane(glm::vec3 from, glm::vec3 to, int axis, float value) {
 
 TEST_CASE("builtin scenes: names and lookup") {
   const std::vector<std::string_view> names = builtin_scene_names();
-  REQUIRE(names.size() == 3);
+  REQUIRE(names.size() == 4);
   CHECK(names[0] == "pool");
   CHECK(names[1] == "window");
   CHECK(names[2] == "spheres");
+  CHECK(names[3] == "room");
   for (std::string_view name : names) {
     const Result<Scene> r = make_builtin_scene(name);
     REQUIRE(r);
@@ -87,7 +88,8 @@ TEST_CASE("builtin scenes: names and lookup") {
   const Result<Scene> unknown = make_builtin_scene("lake");
   REQUIRE(!unknown);
   CHECK(unknown.error().code == ErrorCode::unknown_name);
-  CHECK(unknown.error().message == "unknown scene 'lake'; built-in scenes: pool, window, spheres");
+  CHECK(unknown.error().message ==
+        "unknown scene 'lake'; built-in scenes: pool, window, spheres, room");
   CHECK(!make_builtin_scene(""));
   CHECK(!make_builtin_scene("Pool")); // case-sensitive
 }
