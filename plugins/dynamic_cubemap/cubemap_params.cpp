@@ -16,9 +16,9 @@ const ParamTable<DynamicCubemapParams>& cubemap_table() {
                     "A probe capturing the scene into a cube map; a mirror or glass sphere.")
           .vec3("center", &C::center, -1e4f, 1e4f, "m", "Where the capture is taken")
           .string("node", &C::node,
-                  "Scene object the probe is attached to (\"\": the probe anchor's, else a sphere)")
+                  "Scene object the probe is attached to (\"\": its own sphere at center)")
           .number("radius", &C::radius, 0.01f, 1e4f, "m",
-                  "Radius of the effect's own sphere (when the anchor names no object)")
+                  "Radius of the effect's own sphere (node \"\")")
           .integer("face_size", &C::face_size, 16, 2048, "px", "Width and height of a cube face")
           .number("z_near", &C::z_near, 0.001f, 100.0f, "m", "Near distance of the capture")
           .number("z_far", &C::z_far, 0.01f, 1e5f, "m", "Far distance of the capture")

@@ -51,10 +51,12 @@ public:
       if (const Anchor* a = scene_->find_anchor("probe")) {
         params_.value().center = a->position;
         params_.value().radius = std::max(0.5f * a->size.x, 0.01f);
-        anchor_object_ = a->object;
+        if (a->object >= 0 && static_cast<std::size_t>(a->object) < scene_->objects.size()) {
+          params_.value().node = scene_->objects[static_cast<std::size_t>(a->object)].name;
+        }
       }
     }
-    SNELL_ASSIGN_OR_RETURN(owner_, take_owner(""));
+    SNELL_ASSIGN_OR_RETURN(owner_, take_owner(params_.value().node));
     SNELL_TRY(create_surface_bindings(*ctx_,
                                       {.block_size = sizeof(ProbeBlock),
                                        .images = 1,
@@ -321,12 +323,11 @@ private:
     }
   }
 
-  /// The owner's meshes for `node` ("" : the anchor's object, else the effect's own sphere).
-  /// Errors name dynamic_cubemap.node and the value.
+  /// The owner's meshes: the object called `node`, or for "" the effect's own sphere. Errors
+  /// name dynamic_cubemap.node and the value.
   Result<Surfaces> take_owner(const std::string& node) const {
-    int object = anchor_object_;
+    int object = -1;
     if (!node.empty()) {
-      object = -1;
       if (scene_ != nullptr) {
         for (std::size_t i = 0; i < scene_->objects.size(); ++i) {
           if (scene_->objects[i].name == node) {
@@ -397,7 +398,6 @@ private:
 
   const Context* ctx_ = nullptr;
   const Scene* scene_ = nullptr;
-  int anchor_object_ = -1; ///< The "probe" anchor's object, or -1.
   DeferredRelease release_;
   ParamStore<DynamicCubemapParams> params_{detail::cubemap_table(), DynamicCubemapParams{}};
   std::uint64_t frame_ = 0;

@@ -21,6 +21,29 @@ double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
+/// Adds frame `frame`'s pass times to `out` (name -> one value per frame): passes of the same
+/// name in one frame (several probes' captures) are summed, since the frame pays for all.
+void add_frame_passes(const std::vector<PassTime>& frame_passes, std::uint32_t frame,
+                      std::map<std::string, std::vector<double>>& out) {
+  for (const PassTime& p : frame_passes) {
+    std::vector<double>& times = out[p.name];
+    if (times.size() == frame + 1) {
+      times.back() += p.ms;
+    } else {
+      times.resize(frame, 0.0); // frames without this pass cost it nothing
+      times.push_back(p.ms);
+    }
+  }
+}
+
+/// Pads each pass to `frames` values with 0 (frames that did not draw it: a sliced or budgeted
+/// capture), so its median is per frame, not per occurrence.
+void pad_absent_passes(std::uint32_t frames, std::map<std::string, std::vector<double>>& passes) {
+  for (auto& [name, times] : passes) {
+    times.resize(frames, 0.0);
+  }
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) {
     return 0.0;
@@ -205,13 +228,11 @@ int run_bench(const RenderOptions& o) {
     plain_cpu.push_back(plain->cpu_ms);
     effect_gpu.push_back(effect->gpu_ms);
     effect_cpu.push_back(effect->cpu_ms);
-    for (const PassTime& p : effect->passes) {
-      passes[p.name].push_back(p.ms);
-    }
-    for (const PassTime& p : plain->passes) {
-      plain_passes[p.name].push_back(p.ms);
-    }
+    add_frame_passes(effect->passes, i, passes);
+    add_frame_passes(plain->passes, i, plain_passes);
   }
+  pad_absent_passes(o.frames, passes);
+  pad_absent_passes(o.frames, plain_passes);
   const double plain_ms = median(plain_gpu);
   const double effect_ms = median(effect_gpu);
   const double ratio = plain_ms > 0.0 ? effect_ms / plain_ms : 0.0;

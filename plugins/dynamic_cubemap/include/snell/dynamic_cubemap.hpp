@@ -49,12 +49,13 @@ struct DynamicCubemapParams {
   /// "probe" anchor, else (0, 1, 0). Each in [-1e4, 1e4].
   glm::vec3 center{0.0f, 1.0f, 0.0f};
   /// Name of the scene object (a glTF node) the probe is attached to: the capture is taken at
-  /// the centre of its world bounds, the object is left out of its own capture, and the effect
-  /// draws it with the probe's shading. "" (default): the "probe" anchor's object, else the
-  /// effect's own sphere at `center`. A name the scene does not have is refused.
+  /// the centre of its world bounds (`center` is then unused), the object is left out of its
+  /// own capture, and the effect draws it with the probe's shading. "" = no object: the effect
+  /// draws its own sphere (`center`, `radius`). Default: the "probe" anchor's object's name,
+  /// else "". A name the scene does not have is refused.
   std::string node{};
-  /// Radius of the sphere the effect draws when the anchor names no object of the scene, m.
-  /// Default: half the anchor's size, else 0.5. [0.01, 1e4].
+  /// Radius of the sphere the effect draws when `node` is "", m. Default: half the "probe"
+  /// anchor's size, else 0.5. [0.01, 1e4].
   float radius = 0.5f;
   /// Width = height of each cube face, pixels. Default 256 (seed 002). [16, 2048].
   int face_size = 256;
