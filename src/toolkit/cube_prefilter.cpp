@@ -29,7 +29,7 @@ constexpr std::uint32_t kMaxSamples = 256;
 /// Filtered importance sampling reads one mip coarser than the sample's solid angle (Colbert and
 /// Krivanek's +1, Filament's K = 4). Measured (tests/gpu/test_cube_prefilter.cpp): 0.5 halves
 /// the step error at the smoothest level but lets a small bright source near a face edge show
-/// a second bump at 16 samples; 0 shows ghosts of the sample pattern at 8 samples.
+/// a second bump at 16 samples; 0 lets the sample pattern show (a lumpy lobe at 8 samples).
 constexpr double kLodBias = 1.0;
 
 /// One entry of a level's sample table (std140 vec4, shaders/cube_prefilter.comp): the
