@@ -120,6 +120,12 @@ struct CubeTargetDesc {
   ColorFormat color = ColorFormat::rgba8_unorm; ///< Default rgba8_unorm.
   bool mips = true; ///< Full mip chain (for rough/blurred lookups). Default true.
   const char* debug_name = "cube target"; ///< Used in error messages.
+  /// Also usable as a storage image (VK_IMAGE_USAGE_STORAGE_BIT): compute passes may write its
+  /// levels, e.g. as the destination of a CubePrefilter (snell/toolkit/cube_prefilter.hpp).
+  /// Needs a colour format with storage support (rgba8_unorm, rgba16_float; not rgba8_srgb:
+  /// refused with `unsupported`). Default false: storage usage can make a driver choose a less
+  /// efficient layout for sampling and attachments, so only cubes that need it ask for it.
+  bool storage = false;
 };
 
 /// A six-layer cube colour image with a six-layer depth image, for environment capture.
@@ -157,6 +163,8 @@ public:
   [[nodiscard]] std::uint32_t size() const { return size_; }
   [[nodiscard]] std::uint32_t mip_levels() const { return mips_; }
   [[nodiscard]] ColorFormat color_format() const { return format_; }
+  /// Whether the colour image has storage usage (CubeTargetDesc::storage).
+  [[nodiscard]] bool storage() const { return storage_; }
   [[nodiscard]] VkImage color_image() const { return color_; }
   [[nodiscard]] VkImageView cube_view() const { return cube_view_; }
   [[nodiscard]] VkImageView array_view() const { return array_view_; }
@@ -168,6 +176,7 @@ private:
   const ContextState* ctx_ = nullptr;
   std::uint32_t size_ = 0, mips_ = 1;
   ColorFormat format_ = ColorFormat::rgba8_unorm;
+  bool storage_ = false;
   VkImage color_ = VK_NULL_HANDLE, depth_ = VK_NULL_HANDLE;
   VkDeviceMemory color_memory_ = VK_NULL_HANDLE, depth_memory_ = VK_NULL_HANDLE;
   VkImageView cube_view_ = VK_NULL_HANDLE, array_view_ = VK_NULL_HANDLE,

@@ -69,6 +69,10 @@ struct ComputePipelineDesc {
   Span<const std::uint32_t> compute{};    ///< Compute shader SPIR-V (entry "main"). Required.
   std::vector<VkDescriptorSetLayout> set_layouts{};  ///< Default none.
   std::vector<VkPushConstantRange> push_constants{}; ///< Default none.
+  /// Specialization constants: constant_id i takes constants[i] (32-bit each), e.g. a loop
+  /// count, which lavapipe then compiles in instead of re-specialising per dispatch. Default
+  /// none.
+  std::vector<std::uint32_t> constants{};
 };
 
 /// A pipeline and its layout (RAII, move-only). Must not outlive its Context.

@@ -11,6 +11,7 @@
 //   snell/toolkit/deferred_release.hpp  DeferredRelease: destruction past the frames in flight
 //   snell/toolkit/scaled_target.hpp     ScaledTarget: a target following the output at a scale
 //   snell/toolkit/scene_pass.hpp        mirrored / clipped views, scene passes, cube captures
+//   snell/toolkit/cube_prefilter.hpp    CubePrefilter: GGX prefiltered cube levels (compute)
 //   snell/toolkit/screen_rect.hpp       screen_rect: the pixels a world box covers (scissors,
 //   regions) snell/toolkit/surfaces.hpp          Surfaces: meshes from scene nodes, arrays or
 //   shapes snell/snapshot.hpp                  SceneSnapshot: the frame's opaque colour + depth
@@ -24,6 +25,7 @@
 #include <snell/images.hpp>
 #include <snell/pipeline.hpp>
 #include <snell/snapshot.hpp>
+#include <snell/toolkit/cube_prefilter.hpp>
 #include <snell/toolkit/deferred_release.hpp>
 #include <snell/toolkit/descriptors.hpp>
 #include <snell/toolkit/scaled_target.hpp>

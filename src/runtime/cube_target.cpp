@@ -20,8 +20,20 @@ Result<CubeTarget> CubeTarget::create(const Context& context, const CubeTargetDe
       !r) {
     return r.error();
   }
+  if (desc.storage) {
+    // A storage image needs a format with STORAGE_IMAGE support for optimal tiling (rgba8_srgb
+    // has none on most devices): refused here rather than by vkCreateImage.
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(ctx.physical_device, to_vk_format(desc.color), &props);
+    if ((props.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) == 0) {
+      return fail(ErrorCode::unsupported,
+                  name + ": CubeTargetDesc::storage needs a colour format the device can store "
+                         "to (rgba8_unorm or rgba16_float); this one has no storage support");
+    }
+  }
   CubeTarget t;
   t.ctx_ = &ctx;
+  t.storage_ = desc.storage;
   t.size_ = desc.size;
   t.format_ = desc.color;
   t.mips_ = desc.mips ? full_mip_count(desc.size, desc.size) : 1;
@@ -35,7 +47,8 @@ Result<CubeTarget> CubeTarget::create(const Context& context, const CubeTargetDe
   ci.samples = VK_SAMPLE_COUNT_1_BIT;
   ci.tiling = VK_IMAGE_TILING_OPTIMAL;
   ci.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+             (desc.storage ? VkImageUsageFlags{VK_IMAGE_USAGE_STORAGE_BIT} : VkImageUsageFlags{0});
   if (auto r = detail::create_image(ctx, ci, t.color_, t.color_memory_, name + " colour"); !r) {
     return r.error();
   }
@@ -107,6 +120,7 @@ void CubeTarget::swap(CubeTarget& o) noexcept {
   std::swap(size_, o.size_);
   std::swap(mips_, o.mips_);
   std::swap(format_, o.format_);
+  std::swap(storage_, o.storage_);
   std::swap(color_, o.color_);
   std::swap(depth_, o.depth_);
   std::swap(color_memory_, o.color_memory_);

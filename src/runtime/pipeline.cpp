@@ -224,6 +224,15 @@ Result<Pipeline> Pipeline::create(const Context& ctx, const ComputePipelineDesc&
   ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   ci.stage.module = *comp;
   ci.stage.pName = "main";
+  // constant_id i = constants[i], 4 bytes each.
+  std::vector<VkSpecializationMapEntry> entries(desc.constants.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    entries[i] = {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(4 * i), 4};
+  }
+  const VkSpecializationInfo specialization{static_cast<std::uint32_t>(entries.size()),
+                                            entries.data(), 4 * desc.constants.size(),
+                                            desc.constants.data()};
+  ci.stage.pSpecializationInfo = desc.constants.empty() ? nullptr : &specialization;
   ci.layout = p.layout_;
   SNELL_VK_TRY(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_),
                label);

@@ -19,6 +19,7 @@
 #include <snell/scene_source.hpp>
 #include <snell/scene_types.hpp>
 #include <snell/snapshot.hpp>
+#include <snell/toolkit/cube_prefilter.hpp>
 #include <snell/toolkit/descriptors.hpp>
 #include <snell/toolkit/scaled_target.hpp>
 #include <snell/toolkit/scene_pass.hpp>
@@ -68,6 +69,7 @@ namespace snell::build_check {
   [[maybe_unused]] const ScaledTargetDesc scaled{.scale = 0.5f};
   [[maybe_unused]] const ScenePass scene_pass{.name = "x"};
   [[maybe_unused]] const CubeCapture capture{.name = "x"};
+  [[maybe_unused]] const CubePrefilterDesc prefilter{.samples = 16};
   [[maybe_unused]] const UniformRingDesc ring{.block_size = 16};
   [[maybe_unused]] const DescriptorBinding binding{.binding = 0};
   [[maybe_unused]] const DescriptorSetDesc sets{.bindings = {}};
