@@ -37,8 +37,10 @@ const ParamTable<DynamicCubemapParams>& cubemap_table() {
           .number("ior", &C::ior, 1.0f, 3.0f, "", "Index of refraction of the sphere")
           .number("dispersion", &C::dispersion, 0.0f, 2.0f, "",
                   "Per-channel IOR spread, 20 / Abbe number (refract, glass)")
+          .enumeration("prefilter", &C::prefilter, {"none", "mips", "ggx"},
+                       "Filtering for roughness: none, box mips, or GGX convolution (compute)")
           .number("roughness", &C::roughness, 0.0f, 1.0f, "",
-                  "Blur: the mip level as a fraction of the cube's levels")
+                  "Roughness: reads level roughness x (levels - 1) of the filtered cube")
           .boolean("box_projection", &C::box_projection,
                    "Parallax-correct lookups inside the box box_min..box_max (a room)")
           .vec3("box_min", &C::box_min, -1e4f, 1e4f, "m", "Smallest corner of the room")

@@ -93,6 +93,16 @@ public:
     const DynamicCubemapParams& p = params_.value();
     const auto size = static_cast<std::uint32_t>(p.face_size);
     SNELL_TRY(fit(front_, size));
+    // Slices (a policy or a budget may leave a round unfinished) go into a back cube, published
+    // whole; without slicing there is none.
+    const bool slices = p.refresh == CubemapRefresh::faces_per_frame || budget_ != nullptr;
+    if (slices) {
+      SNELL_TRY(fit(back_, size));
+    } else if (back_ && done_ == 0) {
+      release_.retire(frame_, std::move(back_));
+      back_ = CubeTarget();
+    }
+    SNELL_TRY(fit_prefilter(p));
     time_ = info.time;
     SNELL_TRY(pick_variant(p));
     ++frames_;
@@ -103,15 +113,6 @@ public:
       // A requested update declares the cube outdated: as stale as a cube can be.
       const std::uint64_t age = requested_ ? ~std::uint64_t{0} : frames_ - published_frame_;
       ticket_ = budget_->request(frame_, CaptureBudget::Request{wanted_, age, distance});
-    }
-    // Slices (a policy or a budget may leave a round unfinished) go into a back cube, published
-    // whole; without slicing there is none.
-    const bool slices = p.refresh == CubemapRefresh::faces_per_frame || budget_ != nullptr;
-    if (slices) {
-      SNELL_TRY(fit(back_, size));
-    } else if (back_ && done_ == 0) {
-      release_.retire(frame_, std::move(back_));
-      back_ = CubeTarget();
     }
     return {};
   }
@@ -144,7 +145,7 @@ public:
     capture.mode = multiview ? CubeCaptureMode::multiview : CubeCaptureMode::six_pass;
     capture.time = info.time;
     capture.faces = direct ? 0x3Fu : faces;
-    capture.mips = publish;
+    capture.mips = publish && p.prefilter != CubemapPrefilter::none;
     SNELL_TRY(record_cube_capture(cmd, scene, direct ? front_ : back_, capture, info.timer));
     faces_captured_ = capture.faces;
     if (direct) {
@@ -159,6 +160,12 @@ public:
         point_at_front();
         done_ = 0;
       }
+    }
+    if (publish && p.prefilter == CubemapPrefilter::ggx) {
+      // The published capture, filtered into the cube the surface samples.
+      const CubePrefilterBinding& job =
+          ggx_bindings_[0].source() == front_.color_image() ? ggx_bindings_[0] : ggx_bindings_[1];
+      SNELL_TRY(prefilter_.record(cmd, job, info.timer));
     }
     if (publish) {
       ++publications_;
@@ -183,7 +190,9 @@ public:
       b.model = glm::scale(glm::translate(glm::mat4(1.0f), p.center), glm::vec3(2.0f * p.radius));
     }
     b.eye = glm::vec4(info.main_view.eye, 1.0f);
-    b.optics = glm::vec4(p.dispersion, p.ior, p.roughness, static_cast<float>(front_.mip_levels()));
+    const float levels =
+        p.prefilter == CubemapPrefilter::none ? 1.0f : static_cast<float>(sampled().mip_levels());
+    b.optics = glm::vec4(p.dispersion, p.ior, p.roughness, levels);
     b.tint = glm::vec4(p.tint, 1.0f);
     b.center = glm::vec4(capture_center(time_), 1.0f);
     b.box_min = glm::vec4(p.box_min, 0.0f);
@@ -209,14 +218,80 @@ private:
       return;
     }
     const DynamicCubemapParams& p = params_.value();
-    directory_->publish(this, ProbeView{.cube = front_.cube_view(),
-                                        .sampler = ctx_->sampler(StandardSampler::linear_clamp),
-                                        .mip_levels = front_.mip_levels(),
-                                        .center = published_center_,
-                                        .box_projection = p.box_projection,
-                                        .box_min = p.box_min,
-                                        .box_max = p.box_max,
-                                        .publications = publications_});
+    directory_->publish(
+        this,
+        ProbeView{.cube = sampled().cube_view(),
+                  .sampler = ctx_->sampler(StandardSampler::linear_clamp),
+                  .mip_levels = p.prefilter == CubemapPrefilter::none ? 1u : sampled().mip_levels(),
+                  .center = published_center_,
+                  .box_projection = p.box_projection,
+                  .box_min = p.box_min,
+                  .box_max = p.box_max,
+                  .publications = publications_});
+  }
+
+  /// The cube the surface and the directory sample: the GGX-filtered one, else the capture.
+  const CubeTarget& sampled() const {
+    return filtered_ && params_.value().prefilter == CubemapPrefilter::ggx ? filtered_ : front_;
+  }
+
+  /// With prefilter = ggx: the compute pass (once), the filtered cube of the capture's size
+  /// and the bindings of both capture cubes to it (again when a cube is replaced). Turning ggx
+  /// off keeps them (cheap to keep, expensive to rebuild), but the surface samples the capture.
+  Result<void> fit_prefilter(const DynamicCubemapParams& p) {
+    const bool was = sampled_ggx_;
+    sampled_ggx_ = p.prefilter == CubemapPrefilter::ggx;
+    if (!sampled_ggx_) {
+      if (was) {
+        point_at_front();
+      }
+      return {};
+    }
+    if (!prefilter_) {
+      SNELL_ASSIGN_OR_RETURN(prefilter_,
+                             CubePrefilter::create(*ctx_, {.name = "dynamic_cubemap.prefilter"}));
+    }
+    // Bound: the front cube in [0], the back cube (if any) in [1]; they swap on publication, so
+    // the binding to record is the one whose source is the front cube then.
+    const auto bound = [this](const CubeTarget& cube) {
+      return ggx_bindings_[0].source() == cube.color_image() ||
+             ggx_bindings_[1].source() == cube.color_image();
+    };
+    const bool stale = !filtered_ || filtered_.size() != front_.size() || !bound(front_) ||
+                       (back_ && !bound(back_)) || (!back_ && ggx_bindings_[1]);
+    if (!stale) {
+      if (!was) {
+        point_at_front();
+        whole_ = true; // the filtered cube holds an old capture (or nothing): refresh it
+      }
+      return {};
+    }
+    if (!filtered_ || filtered_.size() != front_.size()) {
+      CubeTarget made;
+      SNELL_ASSIGN_OR_RETURN(
+          made, CubeTarget::create(*ctx_, CubeTargetDesc{.size = front_.size(),
+                                                         .color = ColorFormat::rgba16_float,
+                                                         .mips = true,
+                                                         .debug_name = "dynamic_cubemap ggx",
+                                                         .storage = true}));
+      if (filtered_) {
+        release_.retire(frame_, std::move(filtered_));
+      }
+      filtered_ = std::move(made);
+    }
+    for (CubePrefilterBinding& b : ggx_bindings_) {
+      if (b) {
+        release_.retire(frame_, std::move(b));
+        b = CubePrefilterBinding();
+      }
+    }
+    SNELL_ASSIGN_OR_RETURN(ggx_bindings_[0], prefilter_.bind(front_, filtered_));
+    if (back_) {
+      SNELL_ASSIGN_OR_RETURN(ggx_bindings_[1], prefilter_.bind(back_, filtered_));
+    }
+    whole_ = true; // a new filtered cube: fill it from a full capture this frame
+    point_at_front();
+    return {};
   }
 
   /// Points pipeline_ at the surface's shader variant (specialization constants: the surface
@@ -308,7 +383,7 @@ private:
 
   /// The surface's descriptor and the debug targets follow the front cube.
   void point_at_front() {
-    sets_.set_image(1, front_.cube_view(), ctx_->sampler(StandardSampler::linear_clamp));
+    sets_.set_image(1, sampled().cube_view(), ctx_->sampler(StandardSampler::linear_clamp));
     debug_.clear();
     static const char* const names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     for (std::uint32_t face = 0; face < 6; ++face) {
@@ -402,19 +477,23 @@ private:
   ParamStore<DynamicCubemapParams> params_{detail::cubemap_table(), DynamicCubemapParams{}};
   std::uint64_t frame_ = 0;
   float time_ = 0.0f;
-  CubeTarget front_;                      ///< The published cube the surface samples.
-  CubeTarget back_;                       ///< Slices in progress (faces_per_frame or a budget).
-  CaptureBudget* budget_ = nullptr;       ///< The host's shared face budget, if any.
-  ProbeDirectory* directory_ = nullptr;   ///< The host's list of probes, if any.
-  glm::vec3 published_center_{0.0f};      ///< Where the front cube was captured.
-  std::optional<std::uint32_t> ticket_{}; ///< This frame's budget request.
-  std::uint32_t wanted_ = 0;              ///< Faces the policy wants this frame.
-  std::uint32_t done_ = 0;                ///< Faces of the back cube's round drawn so far.
-  std::uint32_t faces_captured_ = 0;      ///< Faces drawn this frame.
-  std::uint64_t frames_ = 0;              ///< Frames updated so far.
-  std::uint64_t published_frame_ = 0;     ///< frames_ at the last publication.
-  std::uint64_t publications_ = 0;        ///< Complete cubes published.
-  bool requested_ = false;                ///< request_update() since the last publication.
+  CubeTarget front_;        ///< The published cube the surface samples.
+  CubeTarget back_;         ///< Slices in progress (faces_per_frame or a budget).
+  CubeTarget filtered_;     ///< prefilter = ggx: the filtered front cube.
+  CubePrefilter prefilter_; ///< The GGX pass (made on first use).
+  std::array<CubePrefilterBinding, 2> ggx_bindings_{}; ///< front and back cube -> filtered_.
+  bool sampled_ggx_ = false;                           ///< The surface samples filtered_.
+  CaptureBudget* budget_ = nullptr;                    ///< The host's shared face budget, if any.
+  ProbeDirectory* directory_ = nullptr;                ///< The host's list of probes, if any.
+  glm::vec3 published_center_{0.0f};                   ///< Where the front cube was captured.
+  std::optional<std::uint32_t> ticket_{};              ///< This frame's budget request.
+  std::uint32_t wanted_ = 0;                           ///< Faces the policy wants this frame.
+  std::uint32_t done_ = 0;            ///< Faces of the back cube's round drawn so far.
+  std::uint32_t faces_captured_ = 0;  ///< Faces drawn this frame.
+  std::uint64_t frames_ = 0;          ///< Frames updated so far.
+  std::uint64_t published_frame_ = 0; ///< frames_ at the last publication.
+  std::uint64_t publications_ = 0;    ///< Complete cubes published.
+  bool requested_ = false;            ///< request_update() since the last publication.
   bool whole_ = false; ///< Capture all six faces into the front now (first, resized, ...).
   Surfaces owner_;
   UniformRing ubo_;

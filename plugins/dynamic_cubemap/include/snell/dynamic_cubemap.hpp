@@ -35,6 +35,15 @@ enum class CubemapRefresh : std::uint8_t {
                    ///< its mips) when its six faces are done (time slicing).
 };
 
+/// How the cube is filtered for rough lookups (`roughness` picks a level either way).
+enum class CubemapPrefilter : std::uint8_t {
+  none, ///< Level 0 only: sharp, `roughness` has no effect (cheapest).
+  mips, ///< Box-filtered mip chain after every capture (a blur, not a GGX lobe). Default.
+  ggx,  ///< The mips, then a compute pass convolving the cube with GGX per roughness level
+        ///< (split-sum prefilter as Filament's and three.js's PMREM): level k holds roughness
+        ///< k / (levels - 1) (snell::CubePrefilter, docs/runtime.md).
+};
+
 /// What the owner's surface shows.
 enum class CubemapSurface : std::uint8_t {
   reflect, ///< A mirror: the capture along reflect(view, normal). Default.
@@ -83,7 +92,10 @@ struct DynamicCubemapParams {
   /// red, green and blue refract with snell::dispersion_iors(ior, dispersion). 0 = none
   /// (default; one lookup instead of three). [0, 2] (flint glass SF11: ~0.78).
   float dispersion = 0.0f;
-  /// Blur of the lookups: the mip level, as a fraction of the cube's levels. 0 = sharp.
+  /// How the cube is filtered for `roughness`. Default mips.
+  CubemapPrefilter prefilter = CubemapPrefilter::mips;
+  /// Roughness of the surface: the lookup reads level roughness * (levels - 1) of the filtered
+  /// cube (with prefilter = ggx, the GGX lobe of that perceptual roughness). 0 = a mirror.
   /// Default 0. [0, 1].
   float roughness = 0.0f;
   /// Box projection (parallax correction): the capture is taken as the inside of the world box
