@@ -14,6 +14,13 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         FILES_MATCHING PATTERN "*.hpp")
 
+# Snell's GLSL (shaders/snell/*.glsl) for hosts' own shaders: `#include "snell/probe.glsl"` with
+# ${snell_GLSL_INCLUDE_DIR} (set by snellConfig.cmake) on the GLSL include path.
+set(SNELL_INSTALL_GLSLDIR "${CMAKE_INSTALL_DATADIR}/snell/glsl")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/shaders/snell/"
+        DESTINATION "${SNELL_INSTALL_GLSLDIR}/snell"
+        FILES_MATCHING PATTERN "*.glsl")
+
 # Targets: the math headers always; the CPU scene library and the Vulkan runtime when built.
 set(_snell_install_targets snell_math)
 if(TARGET snell_runtime)
@@ -45,7 +52,8 @@ install(EXPORT snellTargets
 configure_package_config_file(
   "${PROJECT_SOURCE_DIR}/cmake/snellConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/snellConfig.cmake"
-  INSTALL_DESTINATION "${SNELL_INSTALL_CMAKEDIR}")
+  INSTALL_DESTINATION "${SNELL_INSTALL_CMAKEDIR}"
+  PATH_VARS SNELL_INSTALL_GLSLDIR)
 
 # 0.x: a minor bump may break the API, so only the same major.minor is compatible.
 write_basic_package_version_file(

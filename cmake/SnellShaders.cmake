@@ -3,7 +3,11 @@
 # it into a target as C++ arrays, so nothing is read from disk at run time.
 #
 #   snell_embed_shaders(<target> NAME <header-name> NAMESPACE <c++::namespace>
-#                       INCLUDE_DIR <dir> SHADERS <files>...)
+#                       INCLUDE_DIR <dir>... SHADERS <files>...)
+#
+# INCLUDE_DIR takes one or more directories, searched in that order for `#include "..."` (after
+# the including file's own folder): a host's own shaders that include Snell's GLSL
+# (`#include "snell/probe.glsl"`) pass their folder and `${snell_GLSL_INCLUDE_DIR}`.
 #
 # For each shader `dir/foo.frag` the target gets `<namespace>::foo_frag` (a
 # std::span<const std::uint32_t>) declared in the generated header `<NAME>.hpp` (on the target's
@@ -27,7 +31,7 @@ find_program(SNELL_GLSLANG glslangValidator REQUIRED)
 find_program(SNELL_SPIRV_VAL spirv-val REQUIRED)
 
 function(snell_embed_shaders target)
-  cmake_parse_arguments(ARG "" "NAME;NAMESPACE;INCLUDE_DIR" "SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;NAMESPACE" "INCLUDE_DIR;SHADERS" ${ARGN})
   foreach(_required IN ITEMS NAME NAMESPACE INCLUDE_DIR SHADERS)
     if(NOT ARG_${_required})
       message(FATAL_ERROR "snell_embed_shaders(${target}): ${_required} is required")
@@ -52,6 +56,10 @@ function(snell_embed_shaders target)
   endif()
   set_property(GLOBAL PROPERTY ${_owner_prop} ${target})
 
+  set(include_flags)
+  foreach(dir IN LISTS ARG_INCLUDE_DIR)
+    list(APPEND include_flags "-I${dir}")
+  endforeach()
   set(gen_dir "${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}")
   file(MAKE_DIRECTORY "${gen_dir}")
   set(sources)
@@ -65,7 +73,7 @@ function(snell_embed_shaders target)
     set(dep "${gen_dir}/${file_name}.d")
     add_custom_command(
       OUTPUT "${spv}"
-      COMMAND "${SNELL_GLSLANG}" --target-env vulkan1.2 -I${ARG_INCLUDE_DIR} --depfile "${dep}"
+      COMMAND "${SNELL_GLSLANG}" --target-env vulkan1.2 ${include_flags} --depfile "${dep}"
               -o "${spv}" "${abs}"
       COMMAND "${SNELL_SPIRV_VAL}" --target-env vulkan1.2 "${spv}"
       DEPENDS "${abs}"

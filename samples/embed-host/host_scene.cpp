@@ -4,12 +4,15 @@
 
 #include <snell/math/plane.hpp>
 
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace embed {
 namespace {
@@ -23,6 +26,22 @@ struct Push {
   glm::vec4 ambient{0.0f};
 };
 static_assert(sizeof(Push) == 128, "the minimum maxPushConstantsSize");
+
+/// Mirrors the chrome material's push constants (shaders/host_chrome.glsl): per view.
+struct ChromePush {
+  glm::mat4 matrix{1.0f};
+  glm::vec4 clip_plane{0.0f, 0.0f, 0.0f, 1.0f};
+  glm::vec4 eye{0.0f};
+};
+static_assert(sizeof(ChromePush) <= 128, "the minimum maxPushConstantsSize");
+
+/// std140 mirror of ChromeBlock (shaders/host_chrome.glsl): per frame slot.
+struct ChromeBlock {
+  glm::vec4 center_levels{0.0f}; ///< xyz: the probe's capture centre; w: its mip levels
+  glm::vec4 box_min{0.0f};       ///< xyz; w: 1 when box-projected
+  glm::vec4 box_max{0.0f};
+  glm::vec4 f0_roughness{0.0f}; ///< rgb: F0; a: roughness
+};
 
 struct Vertex {
   glm::vec3 position;
@@ -57,6 +76,38 @@ void add_box(std::vector<Vertex>& out, glm::vec3 lo, glm::vec3 hi, glm::vec4 col
   }
 }
 
+/// Appends a UV sphere (`slices` around, `stacks` pole to pole), counter-clockwise seen from
+/// outside, with exact normals at the vertices.
+void add_sphere(std::vector<Vertex>& out, glm::vec3 center, float radius, glm::vec4 color,
+                int slices, int stacks) {
+  constexpr float kPi = 3.14159265358979f;
+  auto normal = [&](int stack, int slice) {
+    const float theta = kPi * float(stack) / float(stacks); // from +y
+    const float phi = 2.0f * kPi * float(slice) / float(slices);
+    return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                     std::sin(theta) * std::sin(phi));
+  };
+  for (int i = 0; i < stacks; ++i) {
+    for (int j = 0; j < slices; ++j) {
+      const glm::vec3 quad[4] = {normal(i, j), normal(i, j + 1), normal(i + 1, j + 1),
+                                 normal(i + 1, j)};
+      for (const auto& tri : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+        glm::vec3 a = quad[tri[0]], b = quad[tri[1]], c = quad[tri[2]];
+        const glm::vec3 face = glm::cross(b - a, c - a);
+        if (glm::dot(face, face) < 1e-12f) {
+          continue; // the degenerate half of a quad at a pole
+        }
+        if (glm::dot(face, a + b + c) < 0.0f) {
+          std::swap(b, c); // counter-clockwise seen from outside
+        }
+        for (const glm::vec3& n : {a, b, c}) {
+          out.push_back(Vertex{center + radius * n, n, color});
+        }
+      }
+    }
+  }
+}
+
 VkShaderModule make_module(VkDevice d, std::span<const std::uint32_t> code) {
   VkShaderModuleCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
@@ -69,12 +120,14 @@ VkShaderModule make_module(VkDevice d, std::span<const std::uint32_t> code) {
 
 } // namespace
 
-void HostScene::init(const HostDevice& device, const PoolWater& water) {
+void HostScene::init(const HostDevice& device, const PoolWater& water,
+                     std::uint32_t frames_in_flight) {
   dev_ = &device;
   const VkDevice d = device.device;
 
   // --- Geometry: every object is a box; layer bits say which views draw it. -------------------
   using snell::layer::all;
+  using snell::layer::captured;
   using snell::layer::reflected;
   using snell::layer::refracted;
   const float h = water.height;
@@ -87,8 +140,8 @@ void HostScene::init(const HostDevice& device, const PoolWater& water) {
                  std::uint32_t layers) {
     const auto first = static_cast<std::uint32_t>(vertices.size());
     add_box(vertices, lo, hi, color);
-    objects_.push_back(
-        Object{name, first, static_cast<std::uint32_t>(vertices.size()) - first, layers});
+    objects_.push_back(Object{name, first, static_cast<std::uint32_t>(vertices.size()) - first,
+                              layers, lo, hi, color, false});
   };
   // Below the water only: not in reflections.
   add("pool floor", {c.x - r.x, bottom, c.y - r.y}, {c.x + r.x, h - 1.5f, c.y + r.y},
@@ -110,6 +163,24 @@ void HostScene::init(const HostDevice& device, const PoolWater& water) {
       {0.90f, 0.72f, 0.10f, 0.0f}, all & ~refracted);
   add("orange tower", {c.x + 3.5f, top, c.y - r.y - 3.5f},
       {c.x + 4.5f, top + 3.0f, c.y - r.y - 2.5f}, {0.90f, 0.38f, 0.08f, 0.0f}, all & ~refracted);
+  // Behind the camera: a pink wall, seen only in the chrome ball (its centre reflects it).
+  add("back wall", {c.x - outer, top, c.y + r.y + 8.0f},
+      {c.x + outer, top + 8.0f, c.y + r.y + 8.6f}, {0.80f, 0.30f, 0.55f, 0.0f}, all & ~refracted);
+  // The chrome ball on the far deck, between the yellow box and the orange tower. Its probe
+  // (Snell's dynamic_cubemap, centred here) captures the scene without it: no `captured` bit,
+  // so it never sees itself; it is above the water: no `refracted` bit either. Without a probe
+  // (use_probe(nullptr)) it is drawn like any object, in a flat steel grey.
+  ball_.radius = 1.0f;
+  ball_.center = {c.x + 1.5f, top + ball_.radius, c.y - r.y - 1.6f};
+  {
+    const auto first = static_cast<std::uint32_t>(vertices.size());
+    const glm::vec4 steel{0.55f, 0.56f, 0.58f, 0.0f};
+    add_sphere(vertices, ball_.center, ball_.radius, steel, 48, 24);
+    objects_.push_back(Object{"chrome ball", first,
+                              static_cast<std::uint32_t>(vertices.size()) - first,
+                              all & ~refracted & ~captured, ball_.center - ball_.radius,
+                              ball_.center + ball_.radius, steel, true});
+  }
 
   // --- Vertex buffer: host-visible, written once. ----------------------------------------------
   VkBufferCreateInfo bi{};
@@ -145,6 +216,125 @@ void HostScene::init(const HostDevice& device, const PoolWater& water) {
   li.pushConstantRangeCount = 1;
   li.pPushConstantRanges = &range;
   vk_check(vkCreatePipelineLayout(d, &li, nullptr, &layout_), "vkCreatePipelineLayout");
+  create_chrome_material(frames_in_flight);
+}
+
+void HostScene::create_chrome_material(std::uint32_t frames_in_flight) {
+  const VkDevice d = dev_->device;
+  chrome_vert_ = make_module(d, embed::shaders::host_chrome_vert);
+  chrome_frag_ = make_module(d, embed::shaders::host_chrome_frag);
+
+  // Set 0: binding 0 the probe's cube (combined image sampler), binding 1 the ChromeBlock.
+  const VkDescriptorSetLayoutBinding bindings[2] = {
+      {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+  };
+  VkDescriptorSetLayoutCreateInfo sli{};
+  sli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  sli.bindingCount = 2;
+  sli.pBindings = bindings;
+  vk_check(vkCreateDescriptorSetLayout(d, &sli, nullptr, &chrome_set_layout_),
+           "vkCreateDescriptorSetLayout (chrome)");
+  const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                  sizeof(ChromePush)};
+  VkPipelineLayoutCreateInfo li{};
+  li.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  li.setLayoutCount = 1;
+  li.pSetLayouts = &chrome_set_layout_;
+  li.pushConstantRangeCount = 1;
+  li.pPushConstantRanges = &range;
+  vk_check(vkCreatePipelineLayout(d, &li, nullptr, &chrome_layout_),
+           "vkCreatePipelineLayout (chrome)");
+
+  // One set and one uniform block per frame in flight: a frame rewrites only its own slot, so
+  // frames still on the GPU keep theirs.
+  const VkDescriptorPoolSize sizes[2] = {
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frames_in_flight},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frames_in_flight},
+  };
+  VkDescriptorPoolCreateInfo pi{};
+  pi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  pi.maxSets = frames_in_flight;
+  pi.poolSizeCount = 2;
+  pi.pPoolSizes = sizes;
+  vk_check(vkCreateDescriptorPool(d, &pi, nullptr, &chrome_pool_),
+           "vkCreateDescriptorPool (chrome)");
+  const std::vector<VkDescriptorSetLayout> layouts(frames_in_flight, chrome_set_layout_);
+  std::vector<VkDescriptorSet> sets(frames_in_flight);
+  VkDescriptorSetAllocateInfo ai{};
+  ai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  ai.descriptorPool = chrome_pool_;
+  ai.descriptorSetCount = frames_in_flight;
+  ai.pSetLayouts = layouts.data();
+  vk_check(vkAllocateDescriptorSets(d, &ai, sets.data()), "vkAllocateDescriptorSets (chrome)");
+
+  // The uniform blocks: one host-visible, coherent buffer, a slice per slot.
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(dev_->physical_device, &props);
+  const VkDeviceSize align = props.limits.minUniformBufferOffsetAlignment;
+  const VkDeviceSize stride = (sizeof(ChromeBlock) + align - 1) / align * align;
+  VkBufferCreateInfo bi{};
+  bi.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  bi.size = stride * frames_in_flight;
+  bi.usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+  bi.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  vk_check(vkCreateBuffer(d, &bi, nullptr, &chrome_ubo_), "vkCreateBuffer (chrome)");
+  VkMemoryRequirements req{};
+  vkGetBufferMemoryRequirements(d, chrome_ubo_, &req);
+  VkMemoryAllocateInfo mi{};
+  mi.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+  mi.allocationSize = req.size;
+  mi.memoryTypeIndex =
+      dev_->memory_type(req.memoryTypeBits,
+                        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  vk_check(vkAllocateMemory(d, &mi, nullptr, &chrome_ubo_memory_), "vkAllocateMemory (chrome)");
+  vk_check(vkBindBufferMemory(d, chrome_ubo_, chrome_ubo_memory_, 0), "vkBindBufferMemory");
+  vk_check(vkMapMemory(d, chrome_ubo_memory_, 0, VK_WHOLE_SIZE, 0, &chrome_mapped_),
+           "vkMapMemory (chrome)");
+  for (std::uint32_t i = 0; i < frames_in_flight; ++i) {
+    probe_slots_.push_back(ProbeSlot{sets[i], VK_NULL_HANDLE, VK_NULL_HANDLE, stride * i});
+  }
+}
+
+void HostScene::use_probe(const snell::ProbeView* probe, std::uint64_t frame_index) {
+  probe_slot_ = nullptr;
+  if (probe == nullptr || probe->cube == VK_NULL_HANDLE || probe_slots_.empty()) {
+    return; // nothing published: the ball is drawn flat this frame
+  }
+  ProbeSlot& slot = probe_slots_[static_cast<std::size_t>(frame_index % probe_slots_.size())];
+  // The slot's last frame (frame_index - frames in flight) has completed: the host waited for
+  // its fence before recording this frame, and this frame has not bound the set yet. So the
+  // set and its uniform block may be written now, without racing the GPU or invalidating the
+  // command buffer being recorded. The set is rewritten only when the probe's cube changed (a
+  // time-sliced probe swaps its cubes when it publishes; a resized one makes a new cube).
+  if (slot.cube != probe->cube || slot.sampler != probe->sampler) {
+    const VkDescriptorImageInfo image{probe->sampler, probe->cube,
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkDescriptorBufferInfo buffer{chrome_ubo_, slot.offset, sizeof(ChromeBlock)};
+    VkWriteDescriptorSet writes[2]{};
+    for (VkWriteDescriptorSet& w : writes) {
+      w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+      w.dstSet = slot.set;
+      w.descriptorCount = 1;
+    }
+    writes[0].dstBinding = 0;
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[0].pImageInfo = &image;
+    writes[1].dstBinding = 1;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    writes[1].pBufferInfo = &buffer;
+    vkUpdateDescriptorSets(dev_->device, 2, writes, 0, nullptr);
+    slot.cube = probe->cube;
+    slot.sampler = probe->sampler;
+  }
+  // The lookup parameters of this frame's cube (coherent memory: visible at submission).
+  ChromeBlock block;
+  block.center_levels = glm::vec4(probe->center, float(probe->mip_levels));
+  block.box_min = glm::vec4(probe->box_min, probe->box_projection ? 1.0f : 0.0f);
+  block.box_max = glm::vec4(probe->box_max, 0.0f);
+  block.f0_roughness = glm::vec4(ball_.f0, ball_.roughness);
+  std::memcpy(static_cast<std::uint8_t*>(chrome_mapped_) + slot.offset, &block, sizeof(block));
+  probe_slot_ = &slot;
 }
 
 const HostScene::Pipelines* HostScene::pipelines_for(VkFormat color, VkFormat depth) {
@@ -156,15 +346,18 @@ const HostScene::Pipelines* HostScene::pipelines_for(VkFormat color, VkFormat de
   const bool has_color = color != VK_FORMAT_UNDEFINED;
   const bool has_depth = depth != VK_FORMAT_UNDEFINED;
 
-  auto create = [&](bool sky, VkPipeline& out) -> VkResult {
+  enum class Kind { geometry, sky, chrome };
+  auto create = [&](Kind kind, VkPipeline& out) -> VkResult {
+    const bool sky = kind == Kind::sky;
+    const bool chrome = kind == Kind::chrome;
     VkPipelineShaderStageCreateInfo stages[2]{};
     for (int i = 0; i < 2; ++i) {
       stages[i].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
       stages[i].stage = i == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
       stages[i].pName = "main";
     }
-    stages[0].module = sky ? sky_vert_ : scene_vert_;
-    stages[1].module = sky ? sky_frag_ : scene_frag_;
+    stages[0].module = sky ? sky_vert_ : chrome ? chrome_vert_ : scene_vert_;
+    stages[1].module = sky ? sky_frag_ : chrome ? chrome_frag_ : scene_frag_;
     const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
     const VkVertexInputAttributeDescription attributes[3] = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
@@ -176,7 +369,7 @@ const HostScene::Pipelines* HostScene::pipelines_for(VkFormat color, VkFormat de
     if (!sky) { // the sky is a fullscreen triangle from gl_VertexIndex
       vi.vertexBindingDescriptionCount = 1;
       vi.pVertexBindingDescriptions = &binding;
-      vi.vertexAttributeDescriptionCount = 3;
+      vi.vertexAttributeDescriptionCount = chrome ? 2 : 3; // chrome: position and normal
       vi.pVertexAttributeDescriptions = attributes;
     }
     VkPipelineInputAssemblyStateCreateInfo ia{};
@@ -233,17 +426,21 @@ const HostScene::Pipelines* HostScene::pipelines_for(VkFormat color, VkFormat de
     ci.pDepthStencilState = &ds;
     ci.pColorBlendState = &cb;
     ci.pDynamicState = &dyn;
-    ci.layout = layout_;
+    ci.layout = chrome ? chrome_layout_ : layout_;
     return vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &ci, nullptr, &out);
   };
 
   Pipelines p;
-  VkResult result = create(false, p.geometry);
+  VkResult result = create(Kind::geometry, p.geometry);
   if (result == VK_SUCCESS && has_color) {
-    result = create(true, p.sky); // the sky only colours; a depth-only pass needs none
+    result = create(Kind::sky, p.sky); // the sky only colours; a depth-only pass needs none
+  }
+  if (result == VK_SUCCESS && has_color) {
+    result = create(Kind::chrome, p.chrome); // a depth-only pass draws the ball flat
   }
   if (result != VK_SUCCESS) {
     vkDestroyPipeline(d, p.geometry, nullptr);
+    vkDestroyPipeline(d, p.sky, nullptr);
     if (error_.empty()) {
       error_ = "embed-host: vkCreateGraphicsPipelines for colour format " + std::to_string(color) +
                ", depth format " + std::to_string(depth) + " failed (VkResult " +
@@ -272,17 +469,44 @@ snell::Result<void> HostScene::draw_scene(VkCommandBuffer cmd, const snell::Scen
   push.light_color = glm::vec4(light.color * light.intensity, 0.0f);
   push.ambient = glm::vec4(light.ambient, 0.0f);
 
+  // The chrome ball gets its material when use_probe gave it a cube this frame and the pass
+  // has a colour attachment; otherwise it is drawn flat with the rest.
+  const bool chrome = probe_slot_ != nullptr && p->chrome != VK_NULL_HANDLE;
+  const VkFrontFace front = view.flip_front_face ? VK_FRONT_FACE_CLOCKWISE // mirrored view:
+                                                 : VK_FRONT_FACE_COUNTER_CLOCKWISE; // swapped
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->geometry);
-  // A mirrored view reverses the winding: swap which side is the front.
-  vkCmdSetFrontFace(cmd, view.flip_front_face ? VK_FRONT_FACE_CLOCKWISE
-                                              : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+  vkCmdSetFrontFace(cmd, front);
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(Push), &push);
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertices_, &offset);
+  bool chrome_visible = false;
   for (const Object& o : objects_) {
-    if ((o.layers & view.layer_mask) != 0) {
+    if ((o.layers & view.layer_mask) == 0) {
+      continue;
+    }
+    if (o.chrome && chrome) {
+      chrome_visible = true; // drawn below with its own pipeline
+    } else {
       vkCmdDraw(cmd, o.vertex_count, 1, o.first_vertex, 0);
+    }
+  }
+  if (chrome_visible) {
+    ChromePush cp;
+    cp.matrix = push.matrix;
+    cp.clip_plane = push.clip_plane;
+    cp.eye = glm::vec4(view.eye, 1.0f); // the mirrored eye in a reflection pass
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->chrome);
+    vkCmdSetFrontFace(cmd, front);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, chrome_layout_, 0, 1,
+                            &probe_slot_->set, 0, nullptr);
+    vkCmdPushConstants(cmd, chrome_layout_,
+                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(ChromePush), &cp);
+    for (const Object& o : objects_) {
+      if (o.chrome && (o.layers & view.layer_mask) != 0) {
+        vkCmdDraw(cmd, o.vertex_count, 1, o.first_vertex, 0);
+      }
     }
   }
   if (p->sky != VK_NULL_HANDLE) {
@@ -304,9 +528,16 @@ HostScene::~HostScene() {
   for (auto& [key, p] : pipelines_) {
     vkDestroyPipeline(d, p.geometry, nullptr);
     vkDestroyPipeline(d, p.sky, nullptr);
+    vkDestroyPipeline(d, p.chrome, nullptr);
   }
   vkDestroyPipelineLayout(d, layout_, nullptr);
-  for (VkShaderModule m : {scene_vert_, scene_frag_, sky_vert_, sky_frag_}) {
+  vkDestroyPipelineLayout(d, chrome_layout_, nullptr);
+  vkDestroyDescriptorPool(d, chrome_pool_, nullptr); // frees the sets
+  vkDestroyDescriptorSetLayout(d, chrome_set_layout_, nullptr);
+  vkDestroyBuffer(d, chrome_ubo_, nullptr);
+  vkFreeMemory(d, chrome_ubo_memory_, nullptr); // unmaps
+  for (VkShaderModule m :
+       {scene_vert_, scene_frag_, sky_vert_, sky_frag_, chrome_vert_, chrome_frag_}) {
     vkDestroyShaderModule(d, m, nullptr);
   }
   vkDestroyBuffer(d, vertices_, nullptr);

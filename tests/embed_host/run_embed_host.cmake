@@ -1,6 +1,7 @@
 # Drives snell-embed-host: bad arguments exit 2 with one line on stderr; a render with
 # validation and --check (the water changes the pixel where its centre projects, the sky stays
-# unchanged) exits 0 and writes a PNG of the requested size.
+# unchanged, the chrome ball shows the colour its probe's capture predicts) exits 0 and writes a
+# PNG of the requested size.
 include("${CMAKE_CURRENT_LIST_DIR}/../cmake/expect_png.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -35,7 +36,8 @@ foreach(case
   endif()
 endforeach()
 
-# Render two frames (the second reuses the effect's targets) with validation and the check.
+# Render two frames (the second reuses the effects' targets and the chrome material's descriptor
+# set) with validation and the check.
 set(png "${WORK_DIR}/embed.png")
 expect_exit(0 --out "${png}" --size 320x180 --frames 2 --validation --check)
 message(STATUS "snell-embed-host:\n${last_out}")
