@@ -4,6 +4,7 @@
 #include <snell/effect.hpp>
 #include <snell/frame.hpp>
 #include <snell/math.hpp>
+#include <snell/probe_directory.hpp>
 #include <snell/readback.hpp>
 #include <snell/scene_renderer.hpp>
 
@@ -13,6 +14,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace snell;
 
@@ -27,10 +30,15 @@ struct Rendered {
   Scene scene;
 };
 
-/// Renders a built-in scene (or a glTF file when `name` ends in .gltf), with `effect`
-/// (registry-created, `preset` applied unless empty) when `effect` is not empty.
-Rendered render_builtin(const std::string& name, const std::string& effect = "",
-                        const std::string& preset = "") {
+/// One effect of a golden frame: its registered name and the parameters set on it.
+struct EffectSetup {
+  std::string effect;
+  std::vector<std::pair<std::string, ParamValue>> params{};
+};
+
+/// Renders a built-in scene (or a glTF file when `name` ends in .gltf) with `effects`
+/// (registry-created in order, sharing a ProbeDirectory, each with its parameters set).
+Rendered render_builtin(const std::string& name, const std::vector<EffectSetup>& effects) {
   auto ctx = Context::create(
       ContextDesc{.validation = true, .device = "lavapipe", .app_name = "snell-golden"});
   REQUIRE_MESSAGE(ctx.has_value(), ctx.error().message);
@@ -46,26 +54,31 @@ Rendered render_builtin(const std::string& name, const std::string& effect = "",
         *ctx, FrameDesc{.width = kW, .height = kH, .color = ColorFormat::rgba8_srgb});
     REQUIRE(frame.has_value());
     REQUIRE_FALSE(scene->cameras.empty());
-    std::unique_ptr<Effect> water; // the effect, if any
+    ProbeDirectory probes;
+    std::vector<std::unique_ptr<Effect>> owned;
+    std::vector<Effect*> list;
     EffectRegistry registry;
-    if (!effect.empty()) {
-      REQUIRE(register_builtin_effects(registry));
+    REQUIRE(register_builtin_effects(registry));
+    for (const EffectSetup& setup : effects) {
       EffectCreateInfo info;
       info.context = &*ctx;
       info.color_format = frame->target().vk_color_format();
       info.scene = &*scene;
-      auto created = registry.create(effect, info);
+      info.probes = &probes;
+      auto created = registry.create(setup.effect, info);
       REQUIRE_MESSAGE(created.has_value(), created.error().message);
-      water = std::move(*created);
-      if (!preset.empty()) {
-        REQUIRE(water->set_param("preset", preset));
+      for (const auto& [key, value] : setup.params) {
+        auto set = (*created)->set_param(key, value);
+        REQUIRE_MESSAGE(set.has_value(), set.error().message);
       }
+      list.push_back(created->get());
+      owned.push_back(std::move(*created));
     }
-    Effect* effects[] = {water.get()};
-    auto stats = water
-                     ? frame->render(*renderer, scene->cameras.front(), 0.0f, effects, scene->light)
-                     : frame->render(*renderer, scene->cameras.front(), 0.0f);
+    auto stats = list.empty()
+                     ? frame->render(*renderer, scene->cameras.front(), 0.0f)
+                     : frame->render(*renderer, scene->cameras.front(), 0.0f, list, scene->light);
     REQUIRE_MESSAGE(stats.has_value(), stats.error().message);
+    REQUIRE(stats->effect_errors.empty());
     auto image = frame->read_color();
     REQUIRE(image.has_value());
     out.image = std::move(*image);
@@ -77,6 +90,20 @@ Rendered render_builtin(const std::string& name, const std::string& effect = "",
   CHECK(ctx->validation_error_count() == 0);
   out.scene = std::move(*scene);
   return out;
+}
+
+/// A built-in scene (or glTF file) with `effect` (none when empty), `preset` applied unless
+/// empty.
+Rendered render_builtin(const std::string& name, const std::string& effect = "",
+                        const std::string& preset = "") {
+  if (effect.empty()) {
+    return render_builtin(name, std::vector<EffectSetup>{});
+  }
+  EffectSetup setup{effect};
+  if (!preset.empty()) {
+    setup.params.push_back({"preset", preset});
+  }
+  return render_builtin(name, std::vector<EffectSetup>{setup});
 }
 
 glm::vec3 pixel(const Image& image, glm::vec2 p) {
@@ -265,4 +292,88 @@ TEST_CASE("golden: glTF glass grid (IOR, thickness, roughness, dispersion)") {
     ++checked;
   }
   CHECK(checked == 8);
+}
+
+namespace {
+
+/// True when the eye ray through pixel `px` passes within `scale` x `radius` of `c` (scale > 1:
+/// the sphere's outline grown, < 1: shrunk; edge pixels blend with what is behind).
+bool in_disc(const Rendered& r, glm::vec3 c, float radius, glm::vec2 px, float scale) {
+  const glm::mat4 inv = glm::inverse(r.view.proj * r.view.view);
+  const glm::vec2 ndc = px / glm::vec2(kW, kH) * 2.0f - 1.0f;
+  const glm::vec4 n = inv * glm::vec4(ndc, 0.0f, 1.0f);
+  const glm::vec4 f = inv * glm::vec4(ndc, 1.0f, 1.0f);
+  const glm::vec3 o = glm::vec3(n) / n.w;
+  const glm::vec3 d = glm::normalize(glm::vec3(f) / f.w - o);
+  const glm::vec3 oc = c - o;
+  const float along = glm::dot(oc, d);
+  return glm::length(oc - along * d) <= scale * radius;
+}
+
+/// Fails unless `a` and `b` are equal outside the discs of `spheres` ({centre, radius}) and
+/// differ inside each of them.
+void check_only_spheres_change(const Rendered& a, const Rendered& b,
+                               const std::vector<std::pair<glm::vec3, float>>& spheres) {
+  std::size_t outside_diff = 0;
+  std::vector<std::size_t> inside_diff(spheres.size(), 0);
+  for (std::uint32_t y = 0; y < kH; ++y) {
+    for (std::uint32_t x = 0; x < kW; ++x) {
+      const glm::vec2 px(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      const std::size_t i = (std::size_t{y} * kW + x) * 4;
+      const bool differs = a.image.rgba8[i] != b.image.rgba8[i] ||
+                           a.image.rgba8[i + 1] != b.image.rgba8[i + 1] ||
+                           a.image.rgba8[i + 2] != b.image.rgba8[i + 2];
+      bool near_any = false;
+      for (std::size_t k = 0; k < spheres.size(); ++k) {
+        if (in_disc(a, spheres[k].first, spheres[k].second, px, 1.05f)) {
+          near_any = true;
+          inside_diff[k] += differs && in_disc(a, spheres[k].first, spheres[k].second, px, 0.95f);
+        }
+      }
+      outside_diff += differs && !near_any;
+    }
+  }
+  CHECK(outside_diff == 0);
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
+    CAPTURE(k);
+    CHECK(inside_diff[k] > 50);
+  }
+}
+
+} // namespace
+
+// Looked at: the spheres scene's mirror ball (the probe anchor's object) shows the coloured
+// objects around it and the sky; a glass ball (IOR 1.51, its own sphere) at the front right
+// shows the scene behind it upside down (a ball lens). Independent check: the effects change
+// only the pixels of the two balls' discs, each of them clearly.
+TEST_CASE("golden: spheres with a reflecting and a glass ball (dynamic_cubemap)") {
+  const glm::vec3 glass_centre(2.6f, 0.8f, 1.2f);
+  const Rendered plain = render_builtin("spheres");
+  const Rendered r =
+      render_builtin("spheres", std::vector<EffectSetup>{{"dynamic_cubemap"},
+                                                         {"dynamic_cubemap",
+                                                          {{"node", std::string()},
+                                                           {"center", glass_centre},
+                                                           {"radius", 0.8f},
+                                                           {"surface", std::string("glass")}}}});
+  compare_with_golden(r.image, "spheres_cubemap");
+  const Anchor* probe = r.scene.find_anchor("probe");
+  REQUIRE(probe != nullptr);
+  // The glass ball is new (plain has none); the mirror ball replaces the silver one.
+  check_only_spheres_change(plain, r,
+                            {{probe->position, 0.5f * probe->size.x}, {glass_centre, 0.8f}});
+}
+
+// Looked at: in the room, the mirror ball near the right wall shows that wall and its two
+// paintings large and near with box projection, smaller and farther without (as if the walls
+// were at infinity). Independent check: the two frames differ only inside the ball's disc.
+TEST_CASE("golden: room with box projection on and off (dynamic_cubemap)") {
+  const Rendered off = render_builtin("room", std::vector<EffectSetup>{{"dynamic_cubemap"}});
+  const Rendered on = render_builtin(
+      "room", std::vector<EffectSetup>{{"dynamic_cubemap", {{"box_projection", true}}}});
+  compare_with_golden(off.image, "room_cubemap");
+  compare_with_golden(on.image, "room_cubemap_box");
+  const Anchor* probe = on.scene.find_anchor("probe");
+  REQUIRE(probe != nullptr);
+  check_only_spheres_change(off, on, {{probe->position, 0.5f * probe->size.x}});
 }
