@@ -26,12 +26,13 @@
 
 namespace snell {
 
-/// Names accepted by make_builtin_scene, in a fixed order: {"pool", "window", "spheres", "room"}.
+/// Names accepted by make_builtin_scene, in a fixed order: {"pool", "window", "spheres", "room",
+/// "mirror"}.
 [[nodiscard]] std::vector<std::string_view> builtin_scene_names();
 
 /// The built-in scene called `name` (case-sensitive, one of builtin_scene_names()).
 /// Unknown name: Error{ErrorCode::unknown_name, "unknown scene 'x'; built-in scenes: pool,
-/// window, spheres, room"}.
+/// window, spheres, room, mirror"}.
 [[nodiscard]] Result<Scene> make_builtin_scene(std::string_view name);
 
 /// Seed 000's water scene: a raised pool in a courtyard.
@@ -94,6 +95,19 @@ namespace snell {
 ///   where box projection's correction is large;
 /// - light from above (no shadows: the ceiling does not block it).
 [[nodiscard]] Scene make_room_scene();
+/// The mirror effect's scene, after the classic Vulkan offscreen sample: objects above a mirror
+/// floor with a wall behind.
+/// - floor: 20 x 20 m checker plane at y = 0; mirror: "mirror_floor", a 6 x 6 m quad at
+///   y = 0.01 (x, z in [-3, 3]) facing +Y, dark stone (drawn by the scene renderer without an
+///   effect); anchor "mirror": position (0, 0.01, 0), size (6, 0, 6), object = mirror_floor;
+/// - a brick wall 12 x 5 x 0.3 m centred at (0, 2.5, -4);
+/// - a stone pedestal (radius 0.5, 0.8 m tall) standing on the mirror at the origin, a blue
+///   torus (tumbling about X) above it at y = 1.55;
+/// - a red box (0.7 m, turned 30 degrees) standing on the mirror at (1.8, 0.36, 1), an orange
+///   ball (radius 0.35) floating 1 m above the mirror at (-1.8, 1.36, 1), a green ball
+///   (radius 0.35) resting on it at (-1.8, 0.36, -1.2);
+/// - camera 0: eye (0, 2.6, 7) looking at (0, 0.7, 0), 45 degree vertical field of view.
+[[nodiscard]] Scene make_mirror_scene();
 
 // --- Procedural textures ---------------------------------------------------------------------
 // All generators are deterministic and tileable where stated; they reject arguments out of

@@ -74,7 +74,8 @@ usage:
   snell --help               this text
 
 render options:
-  --scene NAME|FILE   built-in scene (pool, window, spheres, room) or a .gltf/.glb file [pool]
+  --scene NAME|FILE   built-in scene (pool, window, spheres, room, mirror) or a .gltf/.glb file
+                      [pool]
   --size WxH          output size in pixels, each 1..16384 [1280x720]
   --out FILE.png      output PNG (rows top first, world up is image up)
   --eye X,Y,Z         camera position [the scene's default camera]

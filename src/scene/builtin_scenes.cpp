@@ -92,7 +92,7 @@ CameraDesc camera(glm::vec3 eye, glm::vec3 target, float yfov_deg) {
 } // namespace
 
 std::vector<std::string_view> builtin_scene_names() {
-  return {"pool", "window", "spheres", "room"};
+  return {"pool", "window", "spheres", "room", "mirror"};
 }
 
 Result<Scene> make_builtin_scene(std::string_view name) {
@@ -107,6 +107,9 @@ Result<Scene> make_builtin_scene(std::string_view name) {
   }
   if (name == "room") {
     return make_room_scene();
+  }
+  if (name == "mirror") {
+    return make_mirror_scene();
   }
   std::string known;
   for (std::string_view n : builtin_scene_names()) {
@@ -373,6 +376,53 @@ Scene make_room_scene() {
   s.sky.zenith = {0.12f, 0.28f, 0.70f};
   s.sky.horizon = {0.80f, 0.82f, 0.86f};
   s.sky.ground = {0.26f, 0.23f, 0.20f};
+  return s;
+}
+
+Scene make_mirror_scene() {
+  Scene s;
+  s.name = "mirror";
+  const int checker_img = add_image(
+      s, make_checker_image(256, 8, {0.85f, 0.85f, 0.82f}, {0.22f, 0.24f, 0.28f}), "floor_checker");
+  const int brick_img = add_image(s, make_brick_image(512, BrickPattern{}), "bricks");
+  add_object(s, "floor", detail::make_plane({20.0f, 20.0f}, 4, 1.0f),
+             add_material(s, textured("floor", checker_img, glm::vec2(0.25f), 0.6f, 0.3f)),
+             at({0.0f, 0.0f, 0.0f}));
+  // The mirror: a 6 x 6 m quad 1 cm above the floor (what the scene renderer draws when no
+  // effect replaces it: dark polished stone).
+  constexpr float mirror_y = 0.01f;
+  const int mirror = add_object(s, "mirror_floor", detail::make_plane({6.0f, 6.0f}, 1, 1.0f),
+                                add_material(s, plain("dark_stone", {0.05f, 0.05f, 0.06f}, 0.2f)),
+                                at({0.0f, mirror_y, 0.0f}));
+  add_object(s, "wall", detail::make_box({12.0f, 5.0f, 0.3f}, 1.0f),
+             add_material(s, textured("bricks", brick_img, glm::vec2(0.5f))),
+             at({0.0f, 2.5f, -4.0f}));
+  add_object(s, "pedestal", detail::make_cylinder(0.5f, 0.8f),
+             add_material(s, plain("stone", {0.55f, 0.55f, 0.58f}, 0.7f, 0.2f)),
+             at({0.0f, mirror_y + 0.4f, 0.0f}));
+  const int torus = add_object(s, "torus_blue", detail::make_torus(0.55f, 0.18f),
+                               add_material(s, plain("blue", {0.12f, 0.25f, 0.85f}, 0.3f, 0.6f)),
+                               at({0.0f, 1.55f, 0.0f}, 90.0f * degrees, {1, 0, 0}));
+  s.objects[static_cast<std::size_t>(torus)].spin_axis = {1.0f, 0.0f, 0.0f};
+  s.objects[static_cast<std::size_t>(torus)].spin_rate = 0.6f;
+  // Touching the mirror (sharp in a rough mirror) and floating 1 m above it (blurred).
+  add_object(s, "box_red", detail::make_box(glm::vec3(0.7f)),
+             add_material(s, plain("red", {0.85f, 0.10f, 0.08f}, 0.4f)),
+             at({1.8f, mirror_y + 0.35f, 1.0f}, 30.0f * degrees, {0, 1, 0}));
+  add_object(s, "ball_orange", detail::make_sphere(0.35f),
+             add_material(s, plain("orange", {0.95f, 0.45f, 0.08f}, 0.3f, 0.6f)),
+             at({-1.8f, mirror_y + 1.35f, 1.0f}));
+  add_object(s, "ball_green", detail::make_sphere(0.35f),
+             add_material(s, plain("green", {0.15f, 0.70f, 0.20f}, 0.3f, 0.6f)),
+             at({-1.8f, mirror_y + 0.35f, -1.2f}));
+  s.anchors.push_back(Anchor{"mirror", {0.0f, mirror_y, 0.0f}, {6.0f, 0.0f, 6.0f}, mirror});
+  s.cameras.push_back(camera({0.0f, 2.6f, 7.0f}, {0.0f, 0.7f, 0.0f}, 45.0f));
+  s.light.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.5f));
+  s.light.color = {1.0f, 0.96f, 0.90f};
+  s.light.ambient = {0.28f, 0.28f, 0.32f};
+  s.sky.zenith = {0.20f, 0.40f, 0.80f};
+  s.sky.horizon = {0.80f, 0.85f, 0.92f};
+  s.sky.ground = {0.30f, 0.28f, 0.25f};
   return s;
 }
 

@@ -75,11 +75,12 @@ glm::vec3 cross_plane(glm::vec3 from, glm::vec3 to, int axis, float value) {
 
 TEST_CASE("builtin scenes: names and lookup") {
   const std::vector<std::string_view> names = builtin_scene_names();
-  REQUIRE(names.size() == 4);
+  REQUIRE(names.size() == 5);
   CHECK(names[0] == "pool");
   CHECK(names[1] == "window");
   CHECK(names[2] == "spheres");
   CHECK(names[3] == "room");
+  CHECK(names[4] == "mirror");
   for (std::string_view name : names) {
     const Result<Scene> r = make_builtin_scene(name);
     REQUIRE(r);
@@ -89,7 +90,7 @@ TEST_CASE("builtin scenes: names and lookup") {
   REQUIRE(!unknown);
   CHECK(unknown.error().code == ErrorCode::unknown_name);
   CHECK(unknown.error().message ==
-        "unknown scene 'lake'; built-in scenes: pool, window, spheres, room");
+        "unknown scene 'lake'; built-in scenes: pool, window, spheres, room, mirror");
   CHECK(!make_builtin_scene(""));
   CHECK(!make_builtin_scene("Pool")); // case-sensitive
 }
