@@ -108,8 +108,8 @@ public:
       debug_.clear();
       reflection_.append_debug_targets(debug_, "mirror.reflection");
     }
-    place(p);
     const SceneView& main = info.main_view;
+    place(p, main.eye);
     const Plane mirror = plane_from_vec4(plane_);
     // Behind the mirror (or on it): nothing to reflect, the surface shows its back.
     behind_ = !(signed_distance(mirror, main.eye) > kClipOffset);
@@ -183,19 +183,6 @@ private:
   /// geometry), the normal map. Nothing changes on error. `first`: everything is taken.
   Result<void> apply(const MirrorParams& next, bool first) {
     const MirrorParams& now = params_.value();
-    if (next.node.empty()) {
-      if (glm::length(next.normal) < 1e-6f) {
-        return fail(ErrorCode::invalid_argument,
-                    "mirror.normal: (0, 0, 0) has no direction; give the side the mirror faces");
-      }
-      const glm::vec3 n = glm::normalize(next.normal);
-      if (glm::length(next.up - glm::dot(next.up, n) * n) < 1e-4f) {
-        return fail(ErrorCode::invalid_argument,
-                    "mirror.up: (" + std::to_string(next.up.x) + ", " + std::to_string(next.up.y) +
-                        ", " + std::to_string(next.up.z) +
-                        ") is parallel to mirror.normal (or zero): it must lie along the mirror");
-      }
-    }
     if (first || next.node != now.node) {
       Surfaces surface;
       int object = -1;
@@ -262,7 +249,7 @@ private:
 
   /// This frame's plane, model matrix and world bounds: the node's at the frame's time, or the
   /// rectangle's (the unit quad's +Y turned to `normal`, its x to the right, z to -up).
-  void place(const MirrorParams& p) {
+  void place(const MirrorParams& p, glm::vec3 eye) {
     if (object_ >= 0) {
       model_ = scene_->objects[static_cast<std::size_t>(object_)].world_at(time_);
       const Plane world = normalize(transform_plane(plane_from_vec4(local_.plane), model_));
@@ -270,8 +257,22 @@ private:
       world_bounds_ = transform_aabb(local_.bounds, model_);
       return;
     }
-    const glm::vec3 n = glm::normalize(p.normal);
-    const glm::vec3 up = glm::normalize(p.up - glm::dot(p.up, n) * n);
+    // A zero normal faces the eye (as glass's pane does); an up along the normal (or zero)
+    // falls back to world +Y, or +Z for a horizontal mirror.
+    glm::vec3 n = p.normal;
+    if (glm::length(n) < 1e-6f) {
+      n = eye - p.center;
+      if (glm::length(n) < 1e-6f) {
+        n = glm::vec3(0.0f, 0.0f, 1.0f);
+      }
+    }
+    n = glm::normalize(n);
+    glm::vec3 up = p.up - glm::dot(p.up, n) * n;
+    if (glm::length(up) < 1e-4f) {
+      const glm::vec3 world_up = std::abs(n.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+      up = world_up - glm::dot(world_up, n) * n;
+    }
+    up = glm::normalize(up);
     const glm::vec3 right = glm::cross(up, n);
     model_ = glm::mat4(glm::vec4(right * p.size.x, 0.0f), glm::vec4(n, 0.0f),
                        glm::vec4(-up * p.size.y, 0.0f), glm::vec4(p.center, 1.0f));

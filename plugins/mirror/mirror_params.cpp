@@ -16,8 +16,9 @@ const ParamTable<MirrorParams>& mirror_table() {
                               "the plane; tint or Fresnel, contact-hardening roughness.")
           .string("node", &M::node, "Scene object whose mesh is the mirror (\"\": a rectangle)")
           .vec3("center", &M::center, -1e4f, 1e4f, "m", "Centre of the rectangle")
-          .vec3("normal", &M::normal, -1.0f, 1.0f, "", "Side the rectangle reflects (non-zero)")
-          .vec3("up", &M::up, -1.0f, 1.0f, "", "The rectangle's up (not along normal)")
+          .vec3("normal", &M::normal, -1.0f, 1.0f, "",
+                "Side the rectangle reflects ((0,0,0): toward the eye)")
+          .vec3("up", &M::up, -1.0f, 1.0f, "", "The rectangle's up, projected onto its plane")
           .vec2("size", &M::size, 0.01f, 1e4f, "m", "Width and height of the rectangle")
           .number("resolution_scale", &M::resolution_scale, 0.1f, 2.0f, "",
                   "Reflection target size relative to the output")

@@ -42,11 +42,12 @@ struct MirrorParams {
   /// Centre of the effect's own rectangle, m. Default: the "mirror" anchor's position, else
   /// (0, 1, 0). Each in [-1e4, 1e4].
   glm::vec3 center{0.0f, 1.0f, 0.0f};
-  /// The side the rectangle reflects (normalised internally; must not be zero). Default (0, 0, 1)
-  /// (a wall mirror facing +Z). Each in [-1, 1].
+  /// The side the rectangle reflects (normalised internally). (0, 0, 0) turns it toward the eye
+  /// (as glass's pane: a schema range cannot exclude zero, so zero has a meaning). Default
+  /// (0, 0, 1) (a wall mirror facing +Z). Each in [-1, 1].
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
-  /// The rectangle's "up" in world space, projected onto its plane (must not be parallel to
-  /// `normal`). Default (0, 1, 0). Each in [-1, 1].
+  /// The rectangle's "up" in world space, projected onto its plane. Zero or along `normal`:
+  /// world +Y projected, or +Z for a horizontal mirror. Default (0, 1, 0). Each in [-1, 1].
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   /// Width (along cross(up, normal), the rectangle's right) and height (along `up`) of the
   /// rectangle, m. Default (2, 2). Each in [0.01, 1e4].
