@@ -12,14 +12,17 @@ vec2 mirror_uv(mat4 texture_matrix, vec3 world) {
 }
 
 // The level of a reflection of `levels` mips that blurs a reflected point standing `height` m
-// above the plane, seen along a path of `path` m (eye to mirror to point), as a surface of
+// above the plane, seen from `eye_distance` m away (eye to the mirror point), as a surface of
 // `roughness` scatters it: a lobe of half-angle ~roughness^2 spreads it over 2 height
-// roughness^2 m, which is that many pixels at `focal_px` pixels per unit of tan(angle) (the
-// reflection target's height times proj[1][1] / 2). Contact hardening: 0 where it touches.
-float mirror_blur_lod(float roughness, float height, float path, float focal_px, float levels) {
-  float spread = 2.0 * height * roughness * roughness / max(path, 1e-4);
-  float pixels = spread * focal_px;
-  return clamp(log2(max(pixels, 1.0)), 0.0, max(levels - 1.0, 0.0));
+// roughness^2 m, seen from the eye across eye_distance + height, so over an angle of
+// 2 roughness^2 height / (eye_distance + height) (2 roughness^2 for what is infinitely far),
+// which is that many pixels at `focal_px` pixels per unit of tan(angle) (the reflection
+// target's height times proj[1][1] / 2). Contact hardening: level 0 where it touches.
+float mirror_blur_lod(float roughness, float height, float eye_distance, float focal_px,
+                      float levels) {
+  float h = min(height, 1e6);
+  float angle = 2.0 * roughness * roughness * h / max(eye_distance + h, 1e-4);
+  return clamp(log2(max(angle * focal_px, 1.0)), 0.0, max(levels - 1.0, 0.0));
 }
 
 #endif

@@ -34,8 +34,8 @@ void main() {
   }
   vec3 reflected;
   if (kRough) {
-    float path = distance(mirror.eye.xyz, in_world) + min(height, 1e4);
-    float lod = mirror_blur_lod(mirror.tint.w, height, path, mirror.extent.z, mirror.extent.w);
+    float lod = mirror_blur_lod(mirror.tint.w, height, distance(mirror.eye.xyz, in_world),
+                                mirror.extent.z, mirror.extent.w);
     reflected = textureLod(reflection, uv, lod).rgb;
   } else {
     reflected = textureLod(reflection, uv, 0.0).rgb;

@@ -1,0 +1,337 @@
+// The mirror effect's own tests (lavapipe, validation on). Predictions come from CPU ray tracing
+// against the mirror's plane (mirror_rig.hpp), never from the shaders.
+#include "mirror_rig.hpp"
+
+#include <snell/math.hpp>
+
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
+using namespace snell;
+using test::MirrorRig;
+using test::Rect;
+
+namespace {
+
+bool is_red(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+  return r > 100 && g < 60 && b < 60;
+}
+
+constexpr glm::vec3 kHalf(0.3f); // marker half size
+
+/// The linear RGB (0..1) of pixel `px` of an RGBA8 linear image.
+glm::vec3 at(const Image& image, glm::vec2 px) {
+  const std::size_t i =
+      (static_cast<std::size_t>(px.y) * image.width + static_cast<std::size_t>(px.x)) * 4;
+  return glm::vec3(image.rgba8[i], image.rgba8[i + 1], image.rgba8[i + 2]) / 255.0f;
+}
+
+/// Checks that the red marker `marker` shows in mirror `r` where the traced reflection puts it.
+void check_marker(const Image& image, const SceneView& view, const Rect& r, glm::vec3 marker,
+                  float tolerance_px = 1.5f) {
+  const test::Centroids c =
+      test::mirror_centroids(image, view, r, marker - kHalf, marker + kHalf, is_red);
+  INFO("predicted ", c.predicted.x, ", ", c.predicted.y, " (", c.predicted_count, " px); observed ",
+       c.observed.x, ", ", c.observed.y, " (", c.observed_count, " px)");
+  REQUIRE(c.predicted_count > 10);
+  REQUIRE(c.observed_count > 10);
+  CHECK(glm::distance(c.predicted, c.observed) < tolerance_px);
+  CHECK(std::abs(c.observed_count - c.predicted_count) < c.predicted_count / 4 + 8);
+}
+
+} // namespace
+
+// Fails if the mirrored view is wrong (a flipped or unmirrored image, a reflection about the
+// wrong plane, a misregistered lookup). A wall mirror facing +Z with the marker behind the
+// camera (only the mirror can show it), and a floor mirror given as a scene node ("Mirror", a
+// quad) with the marker above it: the red pixels' centroid is where the traced reflection puts it.
+TEST_CASE("mirror: a marker shows where its mirror image projects (wall, and floor node)") {
+  test::GpuFixture gpu;
+  SUBCASE("wall mirror, marker behind the camera") {
+    MirrorRig rig;
+    const glm::vec3 marker(-0.6f, 1.4f, 7.5f);
+    test::add_object(rig.scene,
+                     test::make_box_mesh(kHalf, test::add_emissive_material(rig.scene, {1, 0, 0})),
+                     marker);
+    rig.camera.eye = {1.0f, 1.2f, 5.0f};
+    rig.camera.target = {0.0f, 1.0f, 0.0f};
+    rig.init_frame(gpu.ctx());
+    const Rect wall{{0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}, {4.0f, 3.0f}};
+    MirrorParams p = test::rect_params(wall);
+    p.tint = glm::vec3(1.0f);
+    rig.add(gpu.ctx(), p);
+    const Image image = rig.render_mirrors();
+    check_marker(image, rig.main_view(), wall, marker);
+  }
+  SUBCASE("floor mirror from a node") {
+    MirrorRig rig;
+    const glm::vec3 marker(0.5f, 0.6f, -1.5f);
+    test::add_object(rig.scene,
+                     test::make_box_mesh(kHalf, test::add_emissive_material(rig.scene, {1, 0, 0})),
+                     marker);
+    const int grey = test::add_emissive_material(rig.scene, {0.05f, 0.05f, 0.05f});
+    const int quad = test::add_object(rig.scene, test::make_quad_mesh({3.0f, 3.0f}, grey), {});
+    rig.scene.objects[static_cast<std::size_t>(quad)].name = "Mirror";
+    rig.camera.eye = {0.0f, 2.0f, 5.0f};
+    rig.camera.target = {0.0f, 0.0f, 0.0f};
+    rig.init_frame(gpu.ctx());
+    MirrorParams p;
+    p.node = "Mirror";
+    p.tint = glm::vec3(1.0f);
+    MirrorEffect& mirror = rig.add(gpu.ctx(), p);
+    const Image image = rig.render_mirrors();
+    CHECK(glm::length(glm::vec3(mirror.plane()) - glm::vec3(0.0f, 1.0f, 0.0f)) < 1e-5f);
+    CHECK(std::abs(mirror.plane().w) < 1e-5f);
+    const Rect floor{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, {6.0f, 6.0f}};
+    check_marker(image, rig.main_view(), floor, marker);
+  }
+}
+
+// Fails if anything behind the plane reaches the reflection: a green box behind a wall mirror
+// stands between the mirrored camera and the marker's image, so without clipping it would hide
+// the marker. Both clip modes must drop it, and give the same image (within 2 steps on 99.5 % of
+// the pixels: their rasterisation of the clipped edge may differ by a pixel).
+TEST_CASE("mirror: nothing behind the plane shows, oblique and clip-distance agree") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  const glm::vec3 marker(0.0f, 1.0f, 8.0f);
+  test::add_object(rig.scene,
+                   test::make_box_mesh(kHalf, test::add_emissive_material(rig.scene, {1, 0, 0})),
+                   marker);
+  // Behind the mirror (z < 0), smaller than it: the mirror hides it from the camera too.
+  test::add_object(
+      rig.scene,
+      test::make_box_mesh({0.8f, 0.8f, 0.3f}, test::add_emissive_material(rig.scene, {0, 1, 0})),
+      {0.0f, 1.0f, -1.0f});
+  rig.camera.eye = {0.3f, 1.1f, 5.0f};
+  rig.camera.target = {0.0f, 1.0f, 0.0f};
+  rig.init_frame(gpu.ctx());
+  const Rect wall{{0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}, {3.0f, 3.0f}};
+  MirrorParams p = test::rect_params(wall);
+  p.tint = glm::vec3(1.0f);
+  MirrorEffect& mirror = rig.add(gpu.ctx(), p);
+  const Image oblique = rig.render_mirrors();
+  const auto greens = [](const Image& image) {
+    int n = 0;
+    for (std::size_t i = 0; i < image.rgba8.size(); i += 4) {
+      n += image.rgba8[i + 1] > 60 && image.rgba8[i] < 60 ? 1 : 0;
+    }
+    return n;
+  };
+  CHECK(greens(oblique) == 0);
+  check_marker(oblique, rig.main_view(), wall, marker);
+  REQUIRE(mirror.set_param("clip", std::string("clip_distance")).has_value());
+  const Image clipped = rig.render_mirrors();
+  CHECK(greens(clipped) == 0);
+  int off = 0;
+  for (std::size_t i = 0; i < oblique.rgba8.size(); ++i) {
+    off += std::abs(int(oblique.rgba8[i]) - int(clipped.rgba8[i])) > 2 ? 1 : 0;
+  }
+  CHECK(off <= static_cast<int>(oblique.rgba8.size() / 4 / 200));
+}
+
+namespace {
+
+/// Width in pixels of the edge of a bright reflection on a dark ground, along row `y` from
+/// column `inside` (in the reflection's plateau) to `outside` (on the ground): the pixels whose
+/// red lies between 10 % and 90 % of the way from the ground's value to the plateau's.
+int edge_width(const Image& image, int inside, int outside, int y) {
+  const auto red = [&](int x) {
+    return static_cast<float>(image.rgba8[(std::size_t(y) * image.width + std::size_t(x)) * 4]);
+  };
+  const float top = red(inside), ground = red(outside);
+  const int step = outside < inside ? -1 : 1;
+  int width = 0;
+  for (int x = inside; x != outside; x += step) {
+    const float t = (red(x) - ground) / std::max(top - ground, 1.0f);
+    width += t > 0.1f && t < 0.9f ? 1 : 0;
+  }
+  return width;
+}
+
+} // namespace
+
+// Fails if roughness does not blur, blurs without contact hardening, or blurs less as it grows.
+// Two wide white panels above a floor mirror: A stands on it, B floats 1 m higher. Their
+// reflections' outer edges are measured along a row through each (the 10 %..90 % transition
+// between the panel's plateau and the dark ground): B's edge widens with every roughness step
+// and clearly from 0 to 0.45, and at 0.45 it is wider than A's (A's edge is near the mirror).
+// The panels are wide so that the blur (a few dozen pixels) never reaches their middles.
+TEST_CASE("mirror: roughness widens a reflected edge monotonically, contact hardening") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  const int white = test::add_emissive_material(rig.scene, {1, 1, 1});
+  const glm::vec3 half(1.0f, 0.3f, 0.1f);
+  const glm::vec3 a(-1.4f, 0.3f, -1.5f), b(1.4f, 1.3f, -1.5f); // A touches the mirror
+  test::add_object(rig.scene, test::make_box_mesh(half, white), a);
+  test::add_object(rig.scene, test::make_box_mesh(half, white), b);
+  rig.camera.eye = {0.0f, 1.0f, 6.0f};
+  rig.camera.target = {0.0f, -0.5f, 0.0f};
+  rig.camera.yfov = glm::radians(50.0f);
+  rig.init_frame(gpu.ctx());
+  const Rect floor{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, {10.0f, 10.0f}};
+  MirrorParams p = test::rect_params(floor);
+  p.tint = glm::vec3(1.0f);
+  p.resolution_scale = 1.0f;
+  MirrorEffect& mirror = rig.add(gpu.ctx(), p);
+  const glm::mat4 vp = rig.main_view().proj * rig.main_view().view;
+  const auto px = [&](glm::vec3 w) { return test::predict_pixel(vp, w, rig.width, rig.height); };
+  // The reflections (the panels mirrored in y = 0): centre and outer edge of each, on screen.
+  const glm::vec2 a_mid = px({a.x, -a.y, a.z + half.z});
+  const glm::vec2 a_edge = px({a.x - half.x, -a.y, a.z + half.z});
+  const glm::vec2 b_mid = px({b.x, -b.y, b.z + half.z});
+  const glm::vec2 b_edge = px({b.x + half.x, -b.y, b.z + half.z});
+  const int reach = 40; // pixels past the edge: beyond the widest blur measured
+  std::vector<int> widths;
+  int a_width = 0;
+  for (const float roughness : {0.0f, 0.15f, 0.3f, 0.45f}) {
+    CAPTURE(roughness);
+    REQUIRE(mirror.set_param("roughness", roughness).has_value());
+    const Image image = rig.render_mirrors();
+    test::save_png(image, "roughness_" + std::to_string(static_cast<int>(roughness * 100.0f)));
+    widths.push_back(
+        edge_width(image, int(0.5f * (b_mid.x + b_edge.x)), int(b_edge.x) + reach, int(b_mid.y)));
+    a_width =
+        edge_width(image, int(0.5f * (a_mid.x + a_edge.x)), int(a_edge.x) - reach, int(a_mid.y));
+  }
+  INFO("B's edge widths: ", widths[0], " ", widths[1], " ", widths[2], " ", widths[3],
+       "; A's at 0.45: ", a_width);
+  for (std::size_t i = 1; i < widths.size(); ++i) {
+    CHECK(widths[i] >= widths[i - 1]);
+  }
+  CHECK(widths.front() <= 2);
+  CHECK(widths.back() >= widths.front() + 6);
+  CHECK(widths.back() > a_width + 3);
+}
+
+// Fails if tint or Fresnel deviate from their formulas. A grey (0.8) marker seen in a wall
+// mirror at full resolution, at the centre of its predicted reflection: metal = tint x 0.8 per
+// channel; dielectric = base x (1 - F) + F x 0.8 with F the exact dielectric reflectance
+// (snell::fresnel_dielectric, unit-tested against the literature) at that pixel's incidence.
+TEST_CASE("mirror: tint and dielectric Fresnel match their formulas at a probe pixel") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  const glm::vec3 marker(-1.2f, 1.0f, 7.0f);
+  test::add_object(
+      rig.scene,
+      test::make_box_mesh(glm::vec3(0.6f), test::add_emissive_material(rig.scene, glm::vec3(0.8f))),
+      marker);
+  rig.camera.eye = {2.0f, 1.0f, 4.0f};
+  rig.camera.target = {0.0f, 1.0f, 0.0f};
+  rig.init_frame(gpu.ctx());
+  const Rect wall{{0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}, {5.0f, 3.0f}};
+  MirrorParams p = test::rect_params(wall);
+  p.resolution_scale = 1.0f;
+  p.tint = {0.5f, 0.25f, 1.0f};
+  MirrorEffect& mirror = rig.add(gpu.ctx(), p);
+  const Image metal = rig.render_mirrors();
+  const test::Centroids c = test::mirror_centroids(
+      metal, rig.main_view(), wall, marker - glm::vec3(0.6f), marker + glm::vec3(0.6f),
+      [](std::uint8_t r, std::uint8_t, std::uint8_t) { return r > 20; });
+  REQUIRE(c.predicted_count > 50);
+  const glm::vec2 probe = glm::floor(c.predicted);
+  const glm::vec3 got = at(metal, probe);
+  CAPTURE(got);
+  CHECK(glm::length(got - p.tint * 0.8f) < 3.0f / 255.0f);
+
+  p.tint = glm::vec3(1.0f);
+  p.fresnel = MirrorFresnel::dielectric;
+  p.ior = 1.5f;
+  p.base_color = {0.1f, 0.2f, 0.3f};
+  REQUIRE(mirror.set_params(p).has_value());
+  const Image dielectric = rig.render_mirrors();
+  glm::vec3 o, d;
+  test::pixel_ray(rig.main_view(), rig.width, rig.height, static_cast<std::uint32_t>(probe.x),
+                  static_cast<std::uint32_t>(probe.y), o, d);
+  const float f = fresnel_dielectric(std::abs(glm::dot(d, wall.normal)), 1.0f / 1.5f);
+  const glm::vec3 expected = p.base_color * (1.0f - f) + f * 0.8f;
+  const glm::vec3 got_d = at(dielectric, probe);
+  CAPTURE(f);
+  CAPTURE(got_d);
+  CAPTURE(expected);
+  CHECK(f > 0.04f); // oblique enough to matter
+  CHECK(glm::length(got_d - expected) < 3.0f / 255.0f);
+}
+
+// Fails if a bad node is accepted or changes anything, or a camera behind the mirror breaks the
+// frame: a roof-shaped mesh is refused with how far it is off its plane, an unknown name is
+// refused, and from behind the mirror shows back_color with no pass drawn (and no validation
+// message: the fixture fails on any).
+TEST_CASE("mirror: non-planar and unknown nodes refused, a camera behind renders cleanly") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  const int grey = test::add_emissive_material(rig.scene, {0.1f, 0.1f, 0.1f});
+  Mesh roof = test::make_quad_mesh({1.0f, 1.0f}, grey);
+  const std::size_t n = roof.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) { // a second quad, tilted up along x: a bent sheet
+    Vertex v = roof.vertices[i];
+    v.position.x += 2.0f;
+    v.position.y = 0.4f * (v.position.x - 1.0f);
+    roof.vertices.push_back(v);
+  }
+  const std::size_t indices = roof.indices.size();
+  for (std::size_t i = 0; i < indices; ++i) {
+    roof.indices.push_back(static_cast<std::uint32_t>(roof.indices[i] + n));
+  }
+  const int bent = test::add_object(rig.scene, roof, {0.0f, 0.0f, -3.0f});
+  rig.scene.objects[static_cast<std::size_t>(bent)].name = "bent_sheet";
+  rig.camera.eye = {0.0f, 1.0f, -4.0f}; // behind the wall mirror below, looking at its back
+  rig.camera.target = {0.0f, 1.0f, 0.0f};
+  rig.init_frame(gpu.ctx());
+  const Rect wall{{0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}, {2.0f, 2.0f}};
+  MirrorParams p = test::rect_params(wall);
+  MirrorEffect& mirror = rig.add(gpu.ctx(), p);
+
+  auto bad = mirror.set_param("node", std::string("bent_sheet"));
+  REQUIRE_FALSE(bad.has_value());
+  CAPTURE(bad.error().message);
+  CHECK(bad.error().message.find("mirror.node") != std::string::npos);
+  CHECK(bad.error().message.find("'bent_sheet'") != std::string::npos);
+  CHECK(bad.error().message.find("not planar") != std::string::npos);
+  auto unknown = mirror.set_param("node", std::string("no_such_mirror"));
+  REQUIRE_FALSE(unknown.has_value());
+  CHECK(unknown.error().message.find("no_such_mirror") != std::string::npos);
+  CHECK(std::get<std::string>(*mirror.get_param("node")).empty());
+
+  const Image back = rig.render_mirrors();
+  const glm::vec2 centre = test::predict_pixel(rig.main_view().proj * rig.main_view().view,
+                                               wall.center, rig.width, rig.height);
+  CHECK(glm::length(at(back, centre) - p.back_color) < 2.0f / 255.0f);
+  CHECK_FALSE(mirror.host_view().drawn);
+  for (const PassTime& pass : rig.last_stats.passes) {
+    CHECK(pass.name != "mirror.reflection");
+  }
+}
+
+// Fails if two mirrors share or overwrite each other's pass or target: two wall mirrors turned
+// toward each other's side, each with its own pass this frame, each showing the marker where
+// its own traced reflection puts it.
+TEST_CASE("mirror: two mirrors in one frame") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  const glm::vec3 marker(0.0f, 1.2f, 8.0f);
+  test::add_object(rig.scene,
+                   test::make_box_mesh(kHalf, test::add_emissive_material(rig.scene, {1, 0, 0})),
+                   marker);
+  rig.camera.eye = {0.0f, 1.1f, 5.0f};
+  rig.camera.target = {0.0f, 1.0f, 0.0f};
+  rig.init_frame(gpu.ctx());
+  const glm::vec3 nl = glm::normalize(glm::vec3(0.15f, 0.0f, 1.0f));
+  const glm::vec3 nr = glm::normalize(glm::vec3(-0.15f, 0.0f, 1.0f));
+  const Rect left{{-1.3f, 1.0f, 0.0f}, nl, {0.0f, 1.0f, 0.0f}, {2.0f, 2.0f}};
+  const Rect right{{1.3f, 1.0f, 0.0f}, nr, {0.0f, 1.0f, 0.0f}, {2.0f, 2.0f}};
+  for (const Rect& r : {left, right}) {
+    MirrorParams p = test::rect_params(r);
+    p.tint = glm::vec3(1.0f);
+    rig.add(gpu.ctx(), p);
+  }
+  const Image image = rig.render_mirrors();
+  int passes = 0;
+  for (const PassTime& pass : rig.last_stats.passes) {
+    passes += pass.name == "mirror.reflection" ? 1 : 0;
+  }
+  CHECK(passes == 2);
+  check_marker(image, rig.main_view(), left, marker);
+  check_marker(image, rig.main_view(), right, marker);
+}
