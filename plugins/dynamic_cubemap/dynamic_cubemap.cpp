@@ -66,6 +66,9 @@ public:
     pipeline_desc_ = surface_pipeline_desc(
         info, "dynamic_cubemap surface pipeline", dynamic_cubemap::shaders::probe_surface_vert,
         dynamic_cubemap::shaders::probe_surface_frag, {sets_.layout()});
+    // The probe's owner is opaque: it writes depth, so surfaces drawn after it (another probe,
+    // a glass pane) that lie behind it stay hidden.
+    pipeline_desc_.state.depth_write = true;
     return {};
   }
 

@@ -209,3 +209,38 @@ TEST_CASE("dynamic_cubemap: refraction through the ball puts a hidden marker whe
   CHECK(observed.x < centre_px.x);
   CHECK(observed.y > centre_px.y);
 }
+
+// Fails if a probe's surface writes no depth: a far probe drawn after a near one (in the same
+// line of sight) would cover it. The near ball is tinted red, the far one green; both reflect a
+// white wall behind the camera, so the centre pixel is red, never green.
+TEST_CASE("dynamic_cubemap: a probe's ball hides the probes behind it") {
+  test::GpuFixture gpu;
+  test::FrameRig rig;
+  rig.scene = test::empty_dark_scene();
+  test::add_object(rig.scene,
+                   test::make_box_mesh({8.0f, 8.0f, 0.1f},
+                                       test::add_emissive_material(rig.scene, glm::vec3(1.0f))),
+                   {0.0f, 0.0f, 12.0f});
+  rig.camera.eye = {0.0f, 0.0f, 5.0f};
+  rig.camera.target = {0.0f, 0.0f, 0.0f};
+  rig.width = 64;
+  rig.height = 48;
+  rig.init_frame(gpu.ctx());
+  DynamicCubemapParams p;
+  p.face_size = 32;
+  p.center = {0.0f, 0.0f, 0.0f};
+  p.radius = 0.5f;
+  p.tint = {1.0f, 0.0f, 0.0f};
+  auto near = make_probe(gpu.ctx(), rig, p);
+  p.center = {0.0f, 0.0f, -4.0f};
+  p.radius = 1.5f;
+  p.tint = {0.0f, 1.0f, 0.0f};
+  auto far = make_probe(gpu.ctx(), rig, p);
+  Effect* effects[] = {near.get(), far.get()}; // the far one is drawn last
+  const Image image = rig.render_effects(effects);
+  const std::size_t i = (std::size_t{rig.height / 2} * rig.width + rig.width / 2) * 4;
+  CAPTURE(int(image.rgba8[i]));
+  CAPTURE(int(image.rgba8[i + 1]));
+  CHECK(image.rgba8[i] > 100);
+  CHECK(image.rgba8[i + 1] < 30);
+}
