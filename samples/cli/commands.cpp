@@ -73,6 +73,11 @@ int failed(const Error& e, int code) {
   return code;
 }
 
+/// `e` with the command-line flag it concerns in front ("--out: /x.png: is a folder...").
+Error flagged(const char* flag, const Error& e) {
+  return Error{e.code, std::string(flag) + ": " + e.message, e.vk_result};
+}
+
 std::string json_escape(const std::string& s) {
   std::string out;
   for (const char c : s) {
@@ -177,7 +182,7 @@ int run_render(const RenderOptions& o) {
   // refused now rather than after a long render.
   if (!o.out.empty()) {
     if (auto r = check_output_path(o.out); !r) {
-      return failed(r.error(), 1);
+      return failed(flagged("--out", r.error()), 1);
     }
   }
   ProgressLine progress(ProgressLine::stderr_is_terminal());
@@ -229,13 +234,14 @@ int run_render(const RenderOptions& o) {
     const auto encode_start = Clock::now();
     auto png = encode_png(*image, PngOptions{.compression_level = kPngCompressionLevel});
     if (!png) {
-      return stop_and_fail(Error{png.error().code, o.out + ": " + png.error().message}, 1);
+      return stop_and_fail(Error{png.error().code, "--out: " + o.out + ": " + png.error().message},
+                           1);
     }
     encode_ms = ms_since(encode_start);
     image.reset();
     progress.set("writing " + o.out);
     if (auto r = write_file(o.out, png->data(), png->size()); !r) {
-      return stop_and_fail(r.error(), 1);
+      return stop_and_fail(flagged("--out", r.error()), 1);
     }
     png_bytes = png->size();
   }
@@ -256,7 +262,7 @@ int run_render(const RenderOptions& o) {
 int run_bench(const RenderOptions& o) {
   if (!o.json.empty()) {
     if (auto r = check_output_path(o.json); !r) {
-      return failed(r.error(), 1);
+      return failed(flagged("--json", r.error()), 1);
     }
   }
   ProgressLine progress(ProgressLine::stderr_is_terminal());
@@ -332,7 +338,7 @@ int run_bench(const RenderOptions& o) {
     }
     json << "\n  }\n}\n";
     if (auto r = write_file(o.json, json.str()); !r) {
-      return stop_and_fail(r.error(), 1);
+      return stop_and_fail(flagged("--json", r.error()), 1);
     }
   }
   progress.stop();
