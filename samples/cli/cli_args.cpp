@@ -93,7 +93,10 @@ bench options (as render, plus):
   --frames N          frames of each kind (plain, with effects), >= 3 [60]
   --json FILE         write the results as JSON: plain_ms, effect_ms, ratio, passes, device
 
-Exit codes: 0 success, 1 failure while rendering, 2 bad arguments.
+Output files are written whole or not at all (an existing file is kept on failure).
+On a terminal, work longer than about 2 s shows a progress line on stderr.
+Exit codes: 0 success, 1 failure (rendering, or a file that cannot be read or
+written), 2 bad arguments.
 )";
 }
 
