@@ -42,8 +42,24 @@ struct FloatImage {
 /// Reinhard-Jodie curve, then the sRGB transfer function. Alpha is clamped to [0,1].
 [[nodiscard]] Image tonemap(const FloatImage& image, float exposure = 1.0f);
 
-/// Writes an RGBA8 image as PNG (rows top first). Errors name the path: io_error when the
-/// file cannot be written, invalid_argument for an empty or inconsistent image.
-[[nodiscard]] Result<void> write_png(const std::filesystem::path& path, const Image& image);
+/// PNG encoding options (the encoder is stb_image_write's).
+struct PngOptions {
+  /// Compression effort: how many earlier matches stb_image_write's deflate searches per
+  /// position, in [5, 32] (it treats anything below 5 as 5, its fastest). Default 8, stb's own.
+  /// The `snell` CLI uses 5: measured sizes and times are in docs/cli.md.
+  int compression_level = 8;
+};
+
+/// Encodes an RGBA8 image as PNG bytes (rows top first, 8 bits per channel). An image whose
+/// alpha is 255 everywhere is stored as RGB (the same pixels when decoded, a quarter less to
+/// compress). Errors: invalid_argument for an empty or inconsistent image or a level out of
+/// range, out_of_memory when the encoder cannot allocate.
+[[nodiscard]] Result<std::vector<std::uint8_t>> encode_png(const Image& image,
+                                                           const PngOptions& options = {});
+
+/// Encodes `image` (encode_png) and writes it with write_file (snell/output_file.hpp): all or
+/// nothing, every write and the close checked. Errors name the path and the system's reason.
+[[nodiscard]] Result<void> write_png(const std::filesystem::path& path, const Image& image,
+                                     const PngOptions& options = {});
 
 } // namespace snell

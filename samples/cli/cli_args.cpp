@@ -31,6 +31,13 @@ Result<std::uint32_t> parse_uint(const std::string& text, const std::string& wha
   return static_cast<std::uint32_t>(v);
 }
 
+/// A float as the user would write it (shortest form: 0.1, 5, 1e+06).
+std::string number_text(float v) {
+  std::ostringstream ss;
+  ss << v;
+  return ss.str();
+}
+
 } // namespace
 
 std::pair<std::string, std::uint32_t> split_instance(const std::string& effect) {
@@ -99,7 +106,10 @@ bench options (as render, plus):
   --frames N          frames of each kind (plain, with effects), >= 3 [60]
   --json FILE         write the results as JSON: plain_ms, effect_ms, ratio, passes, device
 
-Exit codes: 0 success, 1 failure while rendering, 2 bad arguments.
+Output files are written whole or not at all (an existing file is kept on failure).
+On a terminal, work longer than about 2 s shows a progress line on stderr.
+Exit codes: 0 success, 1 failure (rendering, or a file that cannot be read or
+written), 2 bad arguments.
 )";
 }
 
@@ -212,21 +222,31 @@ Result<Command> parse(const std::vector<std::string>& args) {
         return n.error();
       }
       o.frames = *n;
+    } else if (a == "--json") {
+      return fail(ErrorCode::invalid_argument,
+                  "--json is an option of snell bench, not of snell render (see --help)");
     } else {
-      return fail(ErrorCode::invalid_argument, "render: unknown option '" + a + "' (see --help)");
+      return fail(ErrorCode::invalid_argument,
+                  cmd.name + ": unknown option '" + a + "' (see --help)");
     }
   }
   if (o.z_near && o.z_far && !(*o.z_near < *o.z_far)) {
-    return fail(ErrorCode::invalid_argument, "--near must be smaller than --far");
+    return fail(ErrorCode::invalid_argument, "--near " + number_text(*o.z_near) +
+                                                 " must be smaller than --far " +
+                                                 number_text(*o.z_far));
   }
   if (o.eye && o.target && *o.eye == *o.target) {
-    return fail(ErrorCode::invalid_argument, "--eye and --target must differ");
+    return fail(ErrorCode::invalid_argument,
+                "--eye and --target are both " + number_text(o.eye->x) + "," +
+                    number_text(o.eye->y) + "," + number_text(o.eye->z) +
+                    "; the camera needs a direction (they must differ)");
   }
   if (cmd.name == "render" && o.out.empty() && o.frames == 1) {
     return fail(ErrorCode::invalid_argument, "render: --out FILE.png is required");
   }
   if (cmd.name == "bench" && o.frames < 3) {
-    return fail(ErrorCode::invalid_argument, "bench: --frames must be at least 3");
+    return fail(ErrorCode::invalid_argument,
+                "bench: --frames " + std::to_string(o.frames) + " is too few; give 3..100000");
   }
   for (const auto& set : o.sets) {
     const auto [name, instance] = split_instance(set[0]);

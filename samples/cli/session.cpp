@@ -10,13 +10,38 @@
 namespace snell::cli {
 namespace {
 
+/// "pool, window, spheres".
+std::string builtin_list() {
+  std::string known;
+  for (std::string_view n : builtin_scene_names()) {
+    known += (known.empty() ? "" : ", ") + std::string(n);
+  }
+  return known;
+}
+
 Result<Scene> load_scene(const std::string& name) {
   const std::filesystem::path path(name);
   const std::string ext = path.extension().string();
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) {
+    return fail(ErrorCode::file_not_found, "--scene " + name +
+                                               ": is a folder; expected a built-in scene (" +
+                                               builtin_list() + ") or a .gltf/.glb file");
+  }
   if (ext == ".gltf" || ext == ".glb") {
     return load_gltf(path);
   }
-  return make_builtin_scene(name);
+  if (std::filesystem::exists(status)) {
+    return fail(ErrorCode::unknown_name, "--scene " + name +
+                                             ": not a .gltf or .glb file, nor a built-in scene (" +
+                                             builtin_list() + ")");
+  }
+  auto scene = make_builtin_scene(name);
+  if (!scene) {
+    return fail(scene.error().code, "--scene: " + scene.error().message + "; or a .gltf/.glb file");
+  }
+  return scene;
 }
 
 /// The camera: the scene's first camera, else one framing the scene's bounds; then overrides.

@@ -1,5 +1,6 @@
 // Readback of targets to the CPU (copy to a host buffer, blocking) and PNG output.
 #include <snell/buffer.hpp>
+#include <snell/output_file.hpp>
 #include <snell/readback.hpp>
 
 #include "barriers.hpp"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
 
 namespace snell {
 namespace {
@@ -257,22 +259,65 @@ Image tonemap(const FloatImage& image, float exposure) {
   return out;
 }
 
-Result<void> write_png(const std::filesystem::path& path, const Image& image) {
-  if (image.width == 0 || image.height == 0 ||
-      image.rgba8.size() != std::size_t{image.width} * image.height * 4) {
+Result<std::vector<std::uint8_t>> encode_png(const Image& image, const PngOptions& options) {
+  const std::size_t pixels = std::size_t{image.width} * image.height;
+  if (image.width == 0 || image.height == 0 || image.width > kMaxImageDimension ||
+      image.height > kMaxImageDimension || image.rgba8.size() != pixels * 4) {
     return fail(ErrorCode::invalid_argument,
-                path.string() + ": cannot write an empty or inconsistent image (" +
+                "encode_png: cannot encode an empty or inconsistent image '" + image.name + "' (" +
                     std::to_string(image.width) + "x" + std::to_string(image.height) + ", " +
-                    std::to_string(image.rgba8.size()) + " bytes)");
+                    std::to_string(image.rgba8.size()) + " bytes; each side must be in 1.." +
+                    std::to_string(kMaxImageDimension) + " and the bytes width * height * 4)");
   }
-  const int ok = stbi_write_png(path.string().c_str(), static_cast<int>(image.width),
-                                static_cast<int>(image.height), 4, image.rgba8.data(),
-                                static_cast<int>(image.width * 4));
-  if (ok == 0) {
-    return fail(ErrorCode::io_error, path.string() + ": cannot write the PNG file (does the "
-                                                     "folder exist and is it writable?)");
+  if (options.compression_level < 5 || options.compression_level > 32) {
+    return fail(ErrorCode::invalid_argument, "PngOptions::compression_level " +
+                                                 std::to_string(options.compression_level) +
+                                                 " is outside [5, 32]");
   }
-  return {};
+  bool opaque = true;
+  for (std::size_t i = 3; i < image.rgba8.size() && opaque; i += 4) {
+    opaque = image.rgba8[i] == 255;
+  }
+  std::vector<std::uint8_t> rgb;
+  if (opaque) {
+    rgb.resize(pixels * 3);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      std::memcpy(&rgb[i * 3], &image.rgba8[i * 4], 3);
+    }
+  }
+  const int channels = opaque ? 3 : 4;
+  std::vector<std::uint8_t> png;
+  const auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+  };
+  int ok = 0;
+  {
+    // stb_image_write takes the level from a global of Snell's own copy of it.
+    static std::mutex stb_globals;
+    const std::lock_guard lock(stb_globals);
+    stbi_write_png_compression_level = options.compression_level;
+    stbi_write_force_png_filter = -1;
+    ok = stbi_write_png_to_func(
+        append, &png, static_cast<int>(image.width), static_cast<int>(image.height), channels,
+        opaque ? rgb.data() : image.rgba8.data(), static_cast<int>(image.width) * channels);
+  }
+  if (ok == 0 || png.empty()) {
+    return fail(ErrorCode::out_of_memory,
+                "encode_png: out of memory encoding the " + std::to_string(image.width) + "x" +
+                    std::to_string(image.height) + " image '" + image.name + "'");
+  }
+  return png;
+}
+
+Result<void> write_png(const std::filesystem::path& path, const Image& image,
+                       const PngOptions& options) {
+  auto png = encode_png(image, options);
+  if (!png) {
+    return fail(png.error().code, path.string() + ": " + png.error().message);
+  }
+  return write_file(path, png->data(), png->size());
 }
 
 } // namespace snell

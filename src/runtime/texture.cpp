@@ -7,9 +7,13 @@
 #include "runtime_internal.hpp"
 #include "vk_util.hpp"
 
+#include "../scene/image_header.hpp"
+
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <utility>
 
@@ -90,21 +94,44 @@ Result<Texture2D> Texture2D::create(const Context& context, const Image& image, 
 
 Result<Texture2D> Texture2D::load(const Context& ctx, const std::filesystem::path& file, bool srgb,
                                   bool mips) {
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  if (!std::filesystem::exists(status)) {
+    return fail(ErrorCode::file_not_found, file.string() + ": no such image file");
+  }
+  if (std::filesystem::is_directory(status)) {
+    return fail(ErrorCode::file_not_found,
+                file.string() + ": is a folder; expected an image file (PNG, JPEG, ...)");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    return fail(ErrorCode::file_not_found, file.string() + ": not a regular file");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  constexpr std::uintmax_t kMaxBytes = std::uintmax_t{256} << 20;
+  if (ec || size == 0 || size > kMaxBytes) {
+    return fail(size == 0 || ec ? ErrorCode::parse_error : ErrorCode::limit_exceeded,
+                file.string() + ": image file size " + std::to_string(size) +
+                    " bytes is outside 1.." + std::to_string(kMaxBytes));
+  }
+  std::ifstream in(file, std::ios::binary);
   if (!in) {
     return fail(ErrorCode::file_not_found, file.string() + ": cannot open the image file");
   }
-  const std::streamsize size = in.tellg();
-  constexpr std::streamsize kMaxBytes = std::streamsize{256} << 20;
-  if (size <= 0 || size > kMaxBytes) {
-    return fail(size <= 0 ? ErrorCode::parse_error : ErrorCode::limit_exceeded,
-                file.string() + ": image file size " + std::to_string(size) +
-                    " bytes is outside 1..268435456");
-  }
   std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) {
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size))) {
     return fail(ErrorCode::io_error, file.string() + ": read failed");
+  }
+  const auto limit_text = [&](std::uint64_t w, std::uint64_t h, const char* format) {
+    return file.string() + ": " + format + " image is " + std::to_string(w) + "x" +
+           std::to_string(h) + " pixels; each side must be in 1.." +
+           std::to_string(kMaxImageDimension);
+  };
+  // The size the header claims first: stb_image cannot describe an image it would not decode
+  // (over 2^30 bytes) and would report "unknown image type".
+  if (const auto header = detail::read_image_header(bytes.data(), bytes.size());
+      header && (header->width > kMaxImageDimension || header->height > kMaxImageDimension)) {
+    return fail(ErrorCode::limit_exceeded,
+                limit_text(header->width, header->height, header->format));
   }
   int w = 0, h = 0, comp = 0;
   if (stbi_info_from_memory(bytes.data(), static_cast<int>(size), &w, &h, &comp) == 0) {
@@ -113,9 +140,9 @@ Result<Texture2D> Texture2D::load(const Context& ctx, const std::filesystem::pat
   }
   if (w <= 0 || h <= 0 || static_cast<std::uint32_t>(w) > kMaxImageDimension ||
       static_cast<std::uint32_t>(h) > kMaxImageDimension) {
-    return fail(ErrorCode::limit_exceeded, file.string() + ": image " + std::to_string(w) + "x" +
-                                               std::to_string(h) + " exceeds " +
-                                               std::to_string(kMaxImageDimension) + " per side");
+    return fail(ErrorCode::limit_exceeded,
+                limit_text(static_cast<std::uint64_t>(std::max(w, 0)),
+                           static_cast<std::uint64_t>(std::max(h, 0)), "the"));
   }
   unsigned char* pixels =
       stbi_load_from_memory(bytes.data(), static_cast<int>(size), &w, &h, &comp, 4);

@@ -82,7 +82,8 @@ bool file_exists(const std::string& path, void* user_data) {
   }
   if (!fs::is_regular_file(status)) {
     ctx.record(ErrorCode::file_not_found,
-               "referenced file '" + clip_for_message(*rel) + "' is not a regular file");
+               "referenced file '" + clip_for_message(*rel) + "' " +
+                   (fs::is_directory(status) ? "is a folder" : "is not a regular file"));
     return false;
   }
   if (!inside_base(ctx, fs::path(path))) {
@@ -140,6 +141,9 @@ Result<std::vector<std::uint8_t>> read_file_limited(const fs::path& path, std::u
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
     return fail(ErrorCode::file_not_found, label + ": file not found");
+  }
+  if (fs::is_directory(status)) {
+    return fail(ErrorCode::file_not_found, label + ": is a folder, not a file");
   }
   if (!fs::is_regular_file(status)) {
     return fail(ErrorCode::file_not_found, label + ": not a regular file");

@@ -3,9 +3,11 @@
 
 #include "gltf_context.hpp"
 #include "gltf_uri.hpp"
+#include "image_header.hpp"
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <vector>
@@ -104,26 +106,35 @@ bool load_image_data(tinygltf::Image* image, int image_index, std::string* err, 
       size = static_cast<int>(cleaned.size());
     }
   }
-  int width = 0;
-  int height = 0;
+  // The size the header claims, read first: stb_image cannot even describe an image over its
+  // own 2^30-byte limit ("unknown image type"), and the limits below name the size.
+  std::uint64_t width = 0;
+  std::uint64_t height = 0;
   int channels = 0;
-  if (stbi_info_from_memory(bytes, size, &width, &height, &channels) == 0) {
-    return refuse(ErrorCode::parse_error,
-                  std::string("cannot read the image header: ") + stbi_failure_reason());
+  if (const auto header = read_image_header(bytes, static_cast<std::size_t>(size))) {
+    width = header->width;
+    height = header->height;
+  } else {
+    int w = 0;
+    int h = 0;
+    if (stbi_info_from_memory(bytes, size, &w, &h, &channels) == 0) {
+      return refuse(ErrorCode::parse_error,
+                    std::string("cannot read the image header: ") + stbi_failure_reason());
+    }
+    width = static_cast<std::uint64_t>(std::max(w, 0));
+    height = static_cast<std::uint64_t>(std::max(h, 0));
   }
   const GltfLimits& limits = ctx.limits;
   const std::string size_text = std::to_string(width) + "x" + std::to_string(height);
-  if (width <= 0 || height <= 0) {
+  if (width == 0 || height == 0) {
     return refuse(ErrorCode::parse_error, "invalid size " + size_text);
   }
-  if (static_cast<std::uint64_t>(width) > limits.max_image_dimension ||
-      static_cast<std::uint64_t>(height) > limits.max_image_dimension) {
+  if (width > limits.max_image_dimension || height > limits.max_image_dimension) {
     return refuse(ErrorCode::limit_exceeded,
                   "image is " + size_text + ", over the limit GltfLimits::max_image_dimension = " +
                       std::to_string(limits.max_image_dimension));
   }
-  const std::uint64_t pixels =
-      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  const std::uint64_t pixels = width * height;
   if (pixels > limits.max_image_pixels) {
     return refuse(ErrorCode::limit_exceeded,
                   "image is " + size_text + " = " + std::to_string(pixels) +
@@ -146,12 +157,13 @@ bool load_image_data(tinygltf::Image* image, int image_index, std::string* err, 
     return refuse(ErrorCode::parse_error,
                   std::string("cannot decode the image: ") + stbi_failure_reason());
   }
-  if (decoded_w != width || decoded_h != height) {
+  if (static_cast<std::uint64_t>(decoded_w) != width ||
+      static_cast<std::uint64_t>(decoded_h) != height) {
     return refuse(ErrorCode::parse_error, "decoded size differs from the header's " + size_text);
   }
   ctx.decoded_pixels += pixels;
-  image->width = width;
-  image->height = height;
+  image->width = decoded_w;
+  image->height = decoded_h;
   image->component = 4;
   image->bits = 8;
   image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;

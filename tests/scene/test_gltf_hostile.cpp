@@ -105,7 +105,7 @@ TEST_CASE("gltf hostile: missing files") {
   }
   SUBCASE("a directory instead of a file") {
     std::filesystem::create_directories(dir.path() / "folder.gltf");
-    expect_error(dir.path() / "folder.gltf", ErrorCode::file_not_found, "not a regular file");
+    expect_error(dir.path() / "folder.gltf", ErrorCode::file_not_found, "is a folder");
   }
   SUBCASE("the external .bin") {
     Builder b = quad_model();
@@ -184,6 +184,46 @@ TEST_CASE("gltf hostile: images over the size caps are refused before decoding")
   expect_error(model, ErrorCode::limit_exceeded, "max_total_image_pixels", limits);
   limits.max_total_image_pixels = 1024; // exactly one 32x32 image fits
   CHECK(snell::load_gltf(model, limits).has_value());
+}
+
+TEST_CASE("gltf hostile: an image whose header claims 60000x60000 names the size and the limit") {
+  // stb_image will not even describe an image over 2^30 bytes ("unknown image type"); the loader
+  // reads the size from the header itself.
+  TempDir dir;
+  SUBCASE("PNG") {
+    std::vector<std::uint8_t> png = solid_png(8, 8, {1, 2, 3, 255});
+    for (const std::size_t at : {16u, 20u}) { // IHDR width, height (big-endian 32-bit)
+      png[at] = 0;
+      png[at + 1] = 0;
+      png[at + 2] = 0xEA; // 60000 = 0xEA60
+      png[at + 3] = 0x60;
+    }
+    Builder b = quad_model();
+    b.add_image_view(png);
+    const std::filesystem::path model = b.write(dir, "huge-png", Container::glb);
+    expect_error(model, ErrorCode::limit_exceeded, "60000x60000");
+    expect_error(model, ErrorCode::limit_exceeded, "max_image_dimension = 8192");
+  }
+  SUBCASE("JPEG") {
+    // Start of image, then a baseline start-of-frame segment: length 17, precision 8, height
+    // and width 60000 (0xEA60), three components; then end of image. Only the header is read.
+    const std::vector<std::uint8_t> jpeg = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08, 0xEA,
+                                            0x60, 0xEA, 0x60, 0x03, 0x01, 0x22, 0x00, 0x02,
+                                            0x11, 0x01, 0x03, 0x11, 0x01, 0xFF, 0xD9};
+    Builder b = quad_model();
+    b.add_image_view(jpeg, "image/jpeg");
+    const std::filesystem::path model = b.write(dir, "huge-jpeg", Container::glb);
+    expect_error(model, ErrorCode::limit_exceeded, "60000x60000");
+  }
+}
+
+TEST_CASE("gltf hostile: a folder where a referenced file is expected says so") {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "inner" / "texture.png");
+  Builder b = quad_model();
+  b.add_image_uri("texture.png");
+  expect_error(b.write(dir, "inner/model", Container::data_uri), ErrorCode::file_not_found,
+               "'texture.png' is a folder");
 }
 
 TEST_CASE("gltf hostile: images that are not PNG/JPEG or are corrupt") {
