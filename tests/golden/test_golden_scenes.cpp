@@ -397,6 +397,7 @@ void check_only_spheres_change(const Rendered& a, const Rendered& b,
 // shows the scene behind it upside down (a ball lens). Independent check: the effects change
 // only the pixels of the two balls' discs, each of them clearly.
 TEST_CASE("golden: spheres with a reflecting and a glass ball (dynamic_cubemap)") {
+  SNELL_GOLDEN_NEEDS_LAVAPIPE();
   const glm::vec3 glass_centre(2.6f, 0.8f, 1.2f);
   const Rendered plain = render_builtin("spheres");
   const Rendered r =
@@ -418,6 +419,7 @@ TEST_CASE("golden: spheres with a reflecting and a glass ball (dynamic_cubemap)"
 // paintings large and near with box projection, smaller and farther without (as if the walls
 // were at infinity). Independent check: the two frames differ only inside the ball's disc.
 TEST_CASE("golden: room with box projection on and off (dynamic_cubemap)") {
+  SNELL_GOLDEN_NEEDS_LAVAPIPE();
   const Rendered off = render_builtin("room", std::vector<EffectSetup>{{"dynamic_cubemap"}});
   const Rendered on = render_builtin(
       "room", std::vector<EffectSetup>{{"dynamic_cubemap", {{"box_projection", true}}}});
@@ -454,6 +456,7 @@ bool on_mirror(const Rendered& r, glm::vec2 px, float margin) {
 // blur. Independent check: the effect changes only pixels whose eye ray meets the mirror's
 // rectangle (traced here), and many of those.
 TEST_CASE("golden: mirror scene, default and rough (mirror)") {
+  SNELL_GOLDEN_NEEDS_LAVAPIPE();
   const Rendered plain = render_builtin("mirror");
   const Rendered sharp = render_builtin("mirror", std::vector<EffectSetup>{{"mirror"}});
   const Rendered rough =
