@@ -102,6 +102,7 @@ public:
     time_ = info.time;
     const MirrorParams& p = params_.value();
     reflection_.set_scale(p.resolution_scale);
+    reflection_.set_mips(p.roughness > 0.0f); // a sharp mirror reads level 0 only
     bool made = false;
     SNELL_ASSIGN_OR_RETURN(made, reflection_.fit(*ctx_, info.main_view.extent, frame_, release_));
     if (made || debug_.empty()) {

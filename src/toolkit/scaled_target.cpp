@@ -1,6 +1,7 @@
 // ScaledTarget: a render target that follows the output extent at a scale.
 #include <snell/toolkit/scaled_target.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace snell {
@@ -11,6 +12,19 @@ VkExtent2D scaled_extent(VkExtent2D output, float scale) {
   };
   return {scaled(output.width), scaled(output.height)};
 }
+
+namespace {
+
+/// Levels of a full mip chain of `e`.
+std::uint32_t full_mip_levels(VkExtent2D e) {
+  std::uint32_t levels = 1;
+  for (std::uint32_t side = std::max(e.width, e.height); side > 1; side >>= 1) {
+    ++levels;
+  }
+  return levels;
+}
+
+} // namespace
 
 Result<bool> ScaledTarget::fit(const Context& ctx, VkExtent2D output, std::uint64_t frame_index,
                                DeferredRelease& release) {
@@ -25,7 +39,10 @@ Result<bool> ScaledTarget::fit(const Context& ctx, VkExtent2D output, std::uint6
                                                  std::to_string(output.height));
   }
   const VkExtent2D e = scaled_extent(output, desc_.scale);
-  if (target_ && target_.width() == e.width && target_.height() == e.height) {
+  const bool has_mips = target_ && target_.mip_levels() > 1;
+  const bool wants_mips = desc_.mips && full_mip_levels(e) > 1;
+  if (target_ && target_.width() == e.width && target_.height() == e.height &&
+      has_mips == wants_mips) {
     return false;
   }
   RenderTargetDesc rd;
