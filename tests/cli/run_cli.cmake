@@ -233,3 +233,17 @@ else()
 endif()
 
 message(STATUS "snell CLI: arguments and renders OK")
+
+# --- The mirror from a glTF node (issue 13) ------------------------------------------------------
+# samples/assets/mirror_hall.gltf (scripts/make_mirror_hall.py): "Mirror" is a flat quad, "Bent"
+# two quads at 30 degrees. The first renders; the second is refused naming the node and how far
+# it is off its plane; an unknown node is refused naming it.
+expect_exit(0 render --scene "${ASSET_DIR}/mirror_hall.gltf" --effect mirror
+            --set mirror.node=Mirror --size 160x90 --out "${WORK_DIR}/mirror_hall.png" --validation)
+expect_png("${WORK_DIR}/mirror_hall.png" 160 90)
+expect_refusal(2 NEEDLES "mirror.node" "'Bent'" "not planar" "off its best plane"
+               ARGS render --scene "${ASSET_DIR}/mirror_hall.gltf" --effect mirror
+                    --set mirror.node=Bent --size 32x32 --out "${WORK_DIR}/t.png")
+expect_refusal(2 NEEDLES "mirror.node" "'Nowhere'"
+               ARGS render --scene "${ASSET_DIR}/mirror_hall.gltf" --effect mirror
+                    --set mirror.node=Nowhere --size 32x32 --out "${WORK_DIR}/t.png")
