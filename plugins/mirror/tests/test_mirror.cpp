@@ -335,3 +335,32 @@ TEST_CASE("mirror: two mirrors in one frame") {
   check_marker(image, rig.main_view(), left, marker);
   check_marker(image, rig.main_view(), right, marker);
 }
+
+// Fails if the host's projective lookup (MirrorHostView::texture_matrix, as mirror_uv in
+// shaders/snell/mirror.glsl applies it) does not land where the main view sees a point of the
+// mirror: on the plane, the reflection's uv is the point's screen uv.
+TEST_CASE("mirror: the host view's texture matrix maps the mirror to its screen position") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  rig.camera.eye = {1.5f, 1.6f, 4.0f};
+  rig.camera.target = {0.0f, 1.0f, 0.0f};
+  rig.init_frame(gpu.ctx());
+  const Rect wall{{0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}, {3.0f, 2.0f}};
+  MirrorEffect& mirror = rig.add(gpu.ctx(), test::rect_params(wall));
+  (void)rig.render_mirrors();
+  const MirrorHostView host = mirror.host_view();
+  CHECK(host.drawn);
+  CHECK(host.color != VK_NULL_HANDLE);
+  CHECK(host.sampler != VK_NULL_HANDLE);
+  CHECK(host.mip_levels == 1); // a sharp mirror builds no mip chain
+  CHECK(glm::length(glm::vec3(host.plane) - wall.normal) < 1e-6f);
+  const glm::mat4 vp = rig.main_view().proj * rig.main_view().view;
+  for (const glm::vec2 local : {glm::vec2(0.0f), glm::vec2(-1.2f, 0.7f), glm::vec2(1.4f, -0.9f)}) {
+    const glm::vec3 p = wall.center + glm::vec3(local, 0.0f);
+    const glm::vec4 t = host.texture_matrix * glm::vec4(p, 1.0f);
+    const glm::vec2 uv = glm::vec2(t) / t.w;
+    const glm::vec2 screen = project_to_uv(vp * glm::vec4(p, 1.0f), ClipConvention::vulkan);
+    CAPTURE(local);
+    CHECK(glm::distance(uv, screen) < 1e-4f);
+  }
+}
