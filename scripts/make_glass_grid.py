@@ -297,13 +297,18 @@ def main():
         "cameras": [{"name": "front", "type": "perspective",
                      "perspective": {"yfov": YFOV, "aspectRatio": round(16 / 9, 6),
                                      "znear": 0.1, "zfar": 100.0}}],
-        "accessors": buf.accessors,
-        "bufferViews": buf.views,
-        "buffers": [{"byteLength": len(buf.data),
-                     "uri": "data:application/octet-stream;base64,"
-                            + base64.b64encode(bytes(buf.data)).decode()}],
     }
-    out = Path(__file__).resolve().parent.parent / "samples" / "assets" / "glass_grid.gltf"
+    write_gltf(doc, buf, "glass_grid.gltf")
+
+
+def write_gltf(doc, buf, name):
+    """Adds `buf` (accessors, views, the embedded buffer) to `doc` and writes samples/assets/name."""
+    doc["accessors"] = buf.accessors
+    doc["bufferViews"] = buf.views
+    doc["buffers"] = [{"byteLength": len(buf.data),
+                       "uri": "data:application/octet-stream;base64,"
+                              + base64.b64encode(bytes(buf.data)).decode()}]
+    out = Path(__file__).resolve().parent.parent / "samples" / "assets" / name
     out.write_text(json.dumps(doc, indent=1) + "\n")
     print(f"wrote {out} ({out.stat().st_size} bytes)")
 

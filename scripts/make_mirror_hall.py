@@ -14,15 +14,13 @@ The geometry helpers are those of make_glass_grid.py. Buffers are embedded (base
 the output is the same byte for byte on every run. Standard library only.
 Run: python3 scripts/make_mirror_hall.py
 """
-import base64
-import json
 import math
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from make_glass_grid import (Buffer, Geometry, box, checker_ground, clean, look_from,  # noqa: E402
-                             opaque, sphere, striped_wall)
+                             opaque, sphere, striped_wall, write_gltf)
 
 WALL_Z = -3.0
 EYE = (2.6, 1.6, 4.2)
@@ -101,15 +99,8 @@ def main():
         "cameras": [{"name": "front right", "type": "perspective",
                      "perspective": {"yfov": YFOV, "aspectRatio": round(16 / 9, 6),
                                      "znear": 0.1, "zfar": 100.0}}],
-        "accessors": buf.accessors,
-        "bufferViews": buf.views,
-        "buffers": [{"byteLength": len(buf.data),
-                     "uri": "data:application/octet-stream;base64,"
-                            + base64.b64encode(bytes(buf.data)).decode()}],
     }
-    out = Path(__file__).resolve().parent.parent / "samples" / "assets" / "mirror_hall.gltf"
-    out.write_text(json.dumps(doc, indent=1) + "\n")
-    print(f"wrote {out} ({out.stat().st_size} bytes)")
+    write_gltf(doc, buf, "mirror_hall.gltf")
 
 
 if __name__ == "__main__":

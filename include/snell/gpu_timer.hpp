@@ -45,4 +45,27 @@ private:
   std::uint32_t ended_ = 0;
 };
 
+/// Times the enclosing C++ scope as one pass: begin() on construction, end() on destruction,
+/// nothing when `timer` is null (effects time their passes only when the host gives a timer).
+class GpuTimerScope {
+public:
+  /// `timer`: may be null. `name`: the pass's name ("pass" when null).
+  GpuTimerScope(GpuTimer* timer, VkCommandBuffer cmd, const char* name) : timer_(timer), cmd_(cmd) {
+    if (timer_ != nullptr) {
+      timer_->begin(cmd_, name != nullptr ? name : "pass");
+    }
+  }
+  ~GpuTimerScope() {
+    if (timer_ != nullptr) {
+      timer_->end(cmd_);
+    }
+  }
+  GpuTimerScope(const GpuTimerScope&) = delete;
+  GpuTimerScope& operator=(const GpuTimerScope&) = delete;
+
+private:
+  GpuTimer* timer_;
+  VkCommandBuffer cmd_;
+};
+
 } // namespace snell

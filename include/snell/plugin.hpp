@@ -12,10 +12,11 @@
 //   snell/toolkit/scaled_target.hpp     ScaledTarget: a target following the output at a scale
 //   snell/toolkit/scene_pass.hpp        mirrored / clipped views, scene passes, cube captures
 //   snell/toolkit/cube_prefilter.hpp    CubePrefilter: GGX prefiltered cube levels (compute)
-//   snell/toolkit/screen_rect.hpp       screen_rect: the pixels a world box covers (scissors,
-//   regions) snell/toolkit/surfaces.hpp          Surfaces: meshes from scene nodes, arrays or
-//   shapes snell/snapshot.hpp                  SceneSnapshot: the frame's opaque colour + depth
-//   copy snell/context.hpp, images.hpp, buffer.hpp, gpu_timer.hpp: the runtime's resources
+//   snell/toolkit/pipeline_variants.hpp PipelineVariants: specialization-constant variants
+//   snell/toolkit/screen_rect.hpp       screen_rect: the pixels a world box covers (scissors)
+//   snell/toolkit/surfaces.hpp          Surfaces: meshes from scene nodes, arrays or shapes
+//   snell/snapshot.hpp                  SceneSnapshot: the frame's opaque colour + depth copy
+//   snell/context.hpp, images.hpp, buffer.hpp, gpu_timer.hpp: the runtime's resources
 #pragma once
 
 #include <snell/buffer.hpp>
@@ -28,6 +29,7 @@
 #include <snell/toolkit/cube_prefilter.hpp>
 #include <snell/toolkit/deferred_release.hpp>
 #include <snell/toolkit/descriptors.hpp>
+#include <snell/toolkit/pipeline_variants.hpp>
 #include <snell/toolkit/scaled_target.hpp>
 #include <snell/toolkit/scene_pass.hpp>
 #include <snell/toolkit/screen_rect.hpp>

@@ -63,12 +63,13 @@ public:
                                        .frames_in_flight = info.frames_in_flight,
                                        .label = "dynamic_cubemap surface"},
                                       ubo_, sets_));
-    pipeline_desc_ = surface_pipeline_desc(
+    GraphicsPipelineDesc desc = surface_pipeline_desc(
         info, "dynamic_cubemap surface pipeline", dynamic_cubemap::shaders::probe_surface_vert,
         dynamic_cubemap::shaders::probe_surface_frag, {sets_.layout()});
     // The probe's owner is opaque: it writes depth, so surfaces drawn after it (another probe,
     // a glass pane) that lie behind it stay hidden.
-    pipeline_desc_.state.depth_write = true;
+    desc.state.depth_write = true;
+    variants_ = PipelineVariants(std::move(desc));
     return {};
   }
 
@@ -298,23 +299,14 @@ private:
   }
 
   /// Points pipeline_ at the surface's shader variant (specialization constants: the surface
-  /// mode, box projection, dispersion), created the first time it is used.
+  /// mode, box projection, dispersion), built the first time it is used.
   Result<void> pick_variant(const DynamicCubemapParams& p) {
     const bool reflects = p.surface != CubemapSurface::refract;
     const bool refracts = p.surface != CubemapSurface::reflect;
-    const std::array<std::uint32_t, 3> constants = {static_cast<std::uint32_t>(p.surface),
-                                                    reflects && p.box_projection ? 1u : 0u,
-                                                    refracts && p.dispersion > 0.0f ? 1u : 0u};
-    const std::uint32_t key = constants[0] | constants[1] << 4 | constants[2] << 5;
-    auto found = pipelines_.find(key);
-    if (found == pipelines_.end()) {
-      GraphicsPipelineDesc desc = pipeline_desc_;
-      desc.constants.assign(constants.begin(), constants.end());
-      Pipeline made;
-      SNELL_ASSIGN_OR_RETURN(made, Pipeline::create(*ctx_, desc));
-      found = pipelines_.emplace(key, std::move(made)).first;
-    }
-    pipeline_ = &found->second;
+    SNELL_ASSIGN_OR_RETURN(pipeline_,
+                           variants_.get(*ctx_, {static_cast<std::uint32_t>(p.surface),
+                                                 reflects && p.box_projection ? 1u : 0u,
+                                                 refracts && p.dispersion > 0.0f ? 1u : 0u}));
     return {};
   }
 
@@ -501,9 +493,8 @@ private:
   Surfaces owner_;
   UniformRing ubo_;
   DescriptorSets sets_;
-  GraphicsPipelineDesc pipeline_desc_;
-  std::map<std::uint32_t, Pipeline> pipelines_; ///< Surface variants by their constants.
-  const Pipeline* pipeline_ = nullptr;          ///< This frame's variant.
+  PipelineVariants variants_;          ///< Surface variants by their constants.
+  const Pipeline* pipeline_ = nullptr; ///< This frame's variant.
   std::vector<DebugTarget> debug_;
 };
 

@@ -63,7 +63,7 @@ struct Drawn {
   SurfaceRecord record{};
   float distance = 0.0f;     ///< From the eye to its centre (drawn farthest first).
   Aabb bounds{};             ///< World bounds, grown by its thickness.
-  std::uint32_t variant = 0; ///< Key of its pipeline in Glass::pipelines_.
+  std::uint32_t variant = 0; ///< Its pipeline variant (Glass::pipeline_for).
   VkRect2D screen{};         ///< The pixels it may cover or sample (bounds on screen).
 };
 
@@ -159,9 +159,9 @@ public:
     sets_.set_image(kProbeCube, no_probe_.cube_view(),
                     ctx_->sampler(StandardSampler::linear_clamp));
     bound_probe_view_ = no_probe_.cube_view();
-    pipeline_desc_ =
+    variants_ = PipelineVariants(
         surface_pipeline_desc(info, "glass surface pipeline", glass::shaders::glass_vert,
-                              glass::shaders::glass_frag, {sets_.layout()});
+                              glass::shaders::glass_frag, {sets_.layout()}));
     SNELL_ASSIGN_OR_RETURN(pane_, Surfaces::shape(*ctx_, Shape::quad));
     return {};
   }
@@ -344,16 +344,8 @@ private:
   /// The pipeline of `variant` (features | debug view << 8 | fresnel << 12), built the first
   /// time it is asked for. kProbe is added in record_draw, once the probes have published.
   Result<const Pipeline*> pipeline_for(std::uint32_t variant) {
-    auto found = pipelines_.find(variant);
-    if (found == pipelines_.end()) {
-      GraphicsPipelineDesc desc = pipeline_desc_;
-      desc.constants = {variant & 0xFFu, variant >> 8 & 0xFu,
-                        (variant >> 12 & 0xFu) == 0 ? 1u : 0u};
-      Pipeline pipeline;
-      SNELL_ASSIGN_OR_RETURN(pipeline, Pipeline::create(*ctx_, desc));
-      found = pipelines_.emplace(variant, std::move(pipeline)).first;
-    }
-    return &found->second;
+    return variants_.get(
+        *ctx_, {variant & 0xFFu, variant >> 8 & 0xFu, (variant >> 12 & 0xFu) == 0 ? 1u : 0u});
   }
 
   /// Uploads the scene's transmissive objects (transmission > 0) once.
@@ -559,8 +551,7 @@ private:
   UniformRing ubo_;
   UniformRing draws_; ///< One DrawBlock per surface drawn.
   DescriptorSets sets_;
-  GraphicsPipelineDesc pipeline_desc_;            ///< The surface pipeline, unspecialised.
-  std::map<std::uint32_t, Pipeline> pipelines_;   ///< Built variants by key (Drawn::variant).
+  PipelineVariants variants_; ///< The surface pipeline's variants (Drawn::variant's constants).
   ProbeDirectory* probes_ = nullptr;              ///< The host's probes, if any.
   CubeTarget no_probe_;                           ///< Bound while no probe is published.
   VkImageView bound_probe_view_ = VK_NULL_HANDLE; ///< What kProbeCube points at.

@@ -66,9 +66,9 @@ public:
                                        .label = "mirror surface"},
                                       ubo_, sets_));
     sets_.set_image(kNormalMap, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
-    pipeline_desc_ =
+    variants_ = PipelineVariants(
         surface_pipeline_desc(info, "mirror surface pipeline", mirror::shaders::mirror_vert,
-                              mirror::shaders::mirror_frag, {sets_.layout()});
+                              mirror::shaders::mirror_frag, {sets_.layout()}));
     return {};
   }
 
@@ -281,22 +281,13 @@ private:
     world_bounds_ = transform_aabb(Aabb{{-0.5f, 0.0f, -0.5f}, {0.5f, 0.0f, 0.5f}}, model_);
   }
 
-  /// Points pipeline_ at the variant of this frame's features, built the first time.
+  /// Points pipeline_ at the variant of this frame's features (built the first time).
   Result<void> pick_variant(const MirrorParams& p) {
-    const std::array<std::uint32_t, 4> constants = {
-        p.roughness > 0.0f ? 1u : 0u, p.fresnel == MirrorFresnel::dielectric ? 1u : 0u,
-        p.fade_distance > 0.0f ? 1u : 0u, normal_map_given_ && p.distortion > 0.0f ? 1u : 0u};
-    const std::uint32_t key =
-        constants[0] | constants[1] << 1 | constants[2] << 2 | constants[3] << 3;
-    auto found = pipelines_.find(key);
-    if (found == pipelines_.end()) {
-      GraphicsPipelineDesc desc = pipeline_desc_;
-      desc.constants.assign(constants.begin(), constants.end());
-      Pipeline made;
-      SNELL_ASSIGN_OR_RETURN(made, Pipeline::create(*ctx_, desc));
-      found = pipelines_.emplace(key, std::move(made)).first;
-    }
-    pipeline_ = &found->second;
+    SNELL_ASSIGN_OR_RETURN(
+        pipeline_, variants_.get(*ctx_, {p.roughness > 0.0f ? 1u : 0u,
+                                         p.fresnel == MirrorFresnel::dielectric ? 1u : 0u,
+                                         p.fade_distance > 0.0f ? 1u : 0u,
+                                         normal_map_given_ && p.distortion > 0.0f ? 1u : 0u}));
     return {};
   }
 
@@ -324,8 +315,7 @@ private:
   bool normal_map_given_ = false;
   UniformRing ubo_;
   DescriptorSets sets_;
-  GraphicsPipelineDesc pipeline_desc_;
-  std::map<std::uint32_t, Pipeline> pipelines_;
+  PipelineVariants variants_; ///< By the shader's constants (roughness, Fresnel, fade, map).
   const Pipeline* pipeline_ = nullptr;
   std::vector<DebugTarget> debug_;
 };

@@ -94,28 +94,6 @@ std::vector<SampleEntry> sample_table(float roughness, std::uint32_t count, std:
   return table;
 }
 
-/// Begins/ends a GPU timer scope when a timer is given.
-class TimerScope {
-public:
-  TimerScope(GpuTimer* timer, VkCommandBuffer cmd, const std::string& name)
-      : timer_(timer), cmd_(cmd) {
-    if (timer_ != nullptr) {
-      timer_->begin(cmd_, name);
-    }
-  }
-  ~TimerScope() {
-    if (timer_ != nullptr) {
-      timer_->end(cmd_);
-    }
-  }
-  TimerScope(const TimerScope&) = delete;
-  TimerScope& operator=(const TimerScope&) = delete;
-
-private:
-  GpuTimer* timer_;
-  VkCommandBuffer cmd_;
-};
-
 std::uint32_t level_extent(std::uint32_t size, std::uint32_t level) {
   return std::max(1u, size >> level);
 }
@@ -429,7 +407,7 @@ Result<void> CubePrefilter::record(VkCommandBuffer cmd, const CubePrefilterBindi
                       std::to_string(count) + " samples per texel)");
     }
   }
-  TimerScope scope(timer, cmd, name_);
+  GpuTimerScope scope(timer, cmd, name_.c_str());
   const std::uint32_t levels = binding.levels_;
   const VkImage src = binding.source_;
   const VkImage dst = binding.destination_;

@@ -37,38 +37,13 @@ void aim_at(SceneView& view, const RenderTarget& target) {
   view.flip_front_face = needs_front_face_flip(view.view, view.proj);
 }
 
-namespace {
-
-/// Begins/ends a GPU timer scope when a timer is given.
-class TimerScope {
-public:
-  TimerScope(GpuTimer* timer, VkCommandBuffer cmd, const char* name) : timer_(timer), cmd_(cmd) {
-    if (timer_ != nullptr) {
-      timer_->begin(cmd_, name != nullptr ? name : "pass");
-    }
-  }
-  ~TimerScope() {
-    if (timer_ != nullptr) {
-      timer_->end(cmd_);
-    }
-  }
-  TimerScope(const TimerScope&) = delete;
-  TimerScope& operator=(const TimerScope&) = delete;
-
-private:
-  GpuTimer* timer_;
-  VkCommandBuffer cmd_;
-};
-
-} // namespace
-
 Result<void> record_scene_pass(VkCommandBuffer cmd, SceneSource& scene, const RenderTarget& target,
                                const ScenePass& pass, GpuTimer* timer) {
   if (!target) {
     return fail(ErrorCode::invalid_argument,
                 std::string(pass.name != nullptr ? pass.name : "pass") + ": no target");
   }
-  TimerScope scope(timer, cmd, pass.name);
+  GpuTimerScope scope(timer, cmd, pass.name);
   const float clear[4] = {pass.clear.r, pass.clear.g, pass.clear.b, pass.clear.a};
   // The scissor is the render area: nothing outside it is cleared or stored.
   target.begin_rendering(cmd, clear, 1.0f, pass.scissor);
@@ -90,7 +65,7 @@ Result<void> record_cube_capture(VkCommandBuffer cmd, SceneSource& scene, const 
                                                  std::to_string(capture.z_near) + ", " +
                                                  std::to_string(capture.z_far) + ")");
   }
-  TimerScope scope(timer, cmd, capture.name);
+  GpuTimerScope scope(timer, cmd, capture.name);
   const glm::mat4 proj =
       cube_face_projection(capture.z_near, capture.z_far, DepthRange::zero_to_one);
   SceneView v;

@@ -8,6 +8,8 @@
 #include <snell/readback.hpp>
 #include <snell/scene_renderer.hpp>
 
+#include "pixel_rays.hpp"
+
 #include <doctest/doctest.h>
 #include <stb_image.h>
 
@@ -349,15 +351,9 @@ namespace {
 /// True when the eye ray through pixel `px` passes within `scale` x `radius` of `c` (scale > 1:
 /// the sphere's outline grown, < 1: shrunk; edge pixels blend with what is behind).
 bool in_disc(const Rendered& r, glm::vec3 c, float radius, glm::vec2 px, float scale) {
-  const glm::mat4 inv = glm::inverse(r.view.proj * r.view.view);
-  const glm::vec2 ndc = px / glm::vec2(kW, kH) * 2.0f - 1.0f;
-  const glm::vec4 n = inv * glm::vec4(ndc, 0.0f, 1.0f);
-  const glm::vec4 f = inv * glm::vec4(ndc, 1.0f, 1.0f);
-  const glm::vec3 o = glm::vec3(n) / n.w;
-  const glm::vec3 d = glm::normalize(glm::vec3(f) / f.w - o);
-  const glm::vec3 oc = c - o;
-  const float along = glm::dot(oc, d);
-  return glm::length(oc - along * d) <= scale * radius;
+  const test::Ray ray = test::pixel_ray(r.view, kW, kH, px);
+  const glm::vec3 oc = c - ray.origin;
+  return glm::length(oc - glm::dot(oc, ray.dir) * ray.dir) <= scale * radius;
 }
 
 /// Fails unless `a` and `b` are equal outside the discs of `spheres` ({centre, radius}) and
@@ -435,16 +431,11 @@ namespace {
 /// True when the eye ray through pixel `px` meets the mirror scene's mirror (the quad y = 0.01,
 /// x and z in [-3, 3]) in front of the eye.
 bool on_mirror(const Rendered& r, glm::vec2 px, float margin) {
-  const glm::mat4 inv = glm::inverse(r.view.proj * r.view.view);
-  const glm::vec2 ndc = px / glm::vec2(kW, kH) * 2.0f - 1.0f;
-  const glm::vec4 n = inv * glm::vec4(ndc, 0.0f, 1.0f);
-  const glm::vec4 f = inv * glm::vec4(ndc, 1.0f, 1.0f);
-  const glm::vec3 o = glm::vec3(n) / n.w;
-  const glm::vec3 d = glm::normalize(glm::vec3(f) / f.w - o);
-  if (d.y >= 0.0f) {
+  const test::Ray ray = test::pixel_ray(r.view, kW, kH, px);
+  if (ray.dir.y >= 0.0f) {
     return false;
   }
-  const glm::vec3 hit = o + d * ((0.01f - o.y) / d.y);
+  const glm::vec3 hit = ray.origin + ray.dir * ((0.01f - ray.origin.y) / ray.dir.y);
   return std::abs(hit.x) <= 3.0f + margin && std::abs(hit.z) <= 3.0f + margin;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "frame_rig.hpp"
+#include "pixel_rays.hpp"
 
 #include <snell/mirror.hpp>
 
@@ -57,33 +58,10 @@ struct Rect {
 /// The unit eye ray through the centre of pixel (x, y) of `view` (w x h).
 inline void pixel_ray(const SceneView& view, std::uint32_t w, std::uint32_t h, std::uint32_t x,
                       std::uint32_t y, glm::vec3& origin, glm::vec3& dir) {
-  const glm::mat4 inv = glm::inverse(view.proj * view.view);
-  const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(w) * 2.0f - 1.0f,
-                      (static_cast<float>(y) + 0.5f) / static_cast<float>(h) * 2.0f - 1.0f);
-  const glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f);
-  const glm::vec4 b = inv * glm::vec4(ndc, 1.0f, 1.0f);
-  origin = glm::vec3(a) / a.w;
-  dir = glm::normalize(glm::vec3(b) / b.w - origin);
-}
-
-/// Distance along the ray to the box lo..hi, or a negative value when it misses.
-inline float ray_box(glm::vec3 o, glm::vec3 d, glm::vec3 lo, glm::vec3 hi) {
-  float t0 = 0.0f, t1 = 1e30f;
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(d[k]) < 1e-9f) {
-      if (o[k] < lo[k] || o[k] > hi[k]) {
-        return -1.0f;
-      }
-      continue;
-    }
-    float a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
-    if (a > b) {
-      std::swap(a, b);
-    }
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t0 <= t1 ? t0 : -1.0f;
+  const Ray ray =
+      pixel_ray(view, w, h, glm::vec2(static_cast<float>(x), static_cast<float>(y)) + 0.5f);
+  origin = ray.origin;
+  dir = ray.dir;
 }
 
 /// Where the ray meets the rectangle (distance along it, and the hit), if it does from the
