@@ -6,6 +6,7 @@
 //   snell/param_table.hpp               parameters declared once: schema, set, get, validation
 //   snell/toolkit/vk_check.hpp          SNELL_VK_TRY, vk_struct, vk_error (VkResult kept in Error)
 //   snell/toolkit/descriptors.hpp       DescriptorSets: layout + one set per frame in flight
+//   snell/toolkit/effect_factory.hpp    check_create_info, effect_factory: create / register
 //   snell/toolkit/uniform_ring.hpp      UniformRing: aligned per-frame uniform blocks
 //   snell/pipeline.hpp                  Pipeline: RAII graphics / compute pipelines from SPIR-V
 //   snell/toolkit/deferred_release.hpp  DeferredRelease: destruction past the frames in flight
@@ -29,6 +30,7 @@
 #include <snell/toolkit/cube_prefilter.hpp>
 #include <snell/toolkit/deferred_release.hpp>
 #include <snell/toolkit/descriptors.hpp>
+#include <snell/toolkit/effect_factory.hpp>
 #include <snell/toolkit/pipeline_variants.hpp>
 #include <snell/toolkit/scaled_target.hpp>
 #include <snell/toolkit/scene_pass.hpp>

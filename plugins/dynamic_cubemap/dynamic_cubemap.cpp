@@ -501,31 +501,15 @@ private:
 } // namespace
 
 Result<std::unique_ptr<DynamicCubemapEffect>> create_dynamic_cubemap(const EffectCreateInfo& info) {
-  if (info.context == nullptr) {
-    return fail(ErrorCode::invalid_argument,
-                "dynamic_cubemap: EffectCreateInfo::context is required");
-  }
-  if (info.frames_in_flight < 1 || info.frames_in_flight > 16) {
-    return fail(ErrorCode::invalid_argument,
-                "dynamic_cubemap: EffectCreateInfo::frames_in_flight = " +
-                    std::to_string(info.frames_in_flight) + " is outside [1, 16]");
-  }
+  SNELL_TRY(check_create_info(info, "dynamic_cubemap"));
   auto effect = std::make_unique<DynamicCubemap>();
   SNELL_TRY(effect->init(info));
   return std::unique_ptr<DynamicCubemapEffect>(std::move(effect));
 }
 
 Result<void> register_dynamic_cubemap(EffectRegistry& registry) {
-  return registry.add(
-      "dynamic_cubemap",
-      [](const EffectCreateInfo& info) -> Result<std::unique_ptr<Effect>> {
-        auto e = create_dynamic_cubemap(info);
-        if (!e) {
-          return e.error();
-        }
-        return std::unique_ptr<Effect>(std::move(*e));
-      },
-      dynamic_cubemap_schema());
+  return registry.add("dynamic_cubemap", effect_factory(create_dynamic_cubemap),
+                      dynamic_cubemap_schema());
 }
 
 } // namespace snell

@@ -561,28 +561,14 @@ private:
 
 Result<std::unique_ptr<GlassEffect>> create(GlassKind kind, const EffectCreateInfo& info) {
   const char* name = kind == GlassKind::ice ? "ice" : "glass";
-  if (info.context == nullptr) {
-    return fail(ErrorCode::invalid_argument,
-                std::string(name) + ": EffectCreateInfo::context is required");
-  }
-  if (info.frames_in_flight < 1 || info.frames_in_flight > 16) {
-    return fail(ErrorCode::invalid_argument,
-                std::string(name) + ": EffectCreateInfo::frames_in_flight = " +
-                    std::to_string(info.frames_in_flight) + " is outside [1, 16]");
-  }
+  SNELL_TRY(check_create_info(info, name));
   auto glass = std::make_unique<Glass>(kind);
   SNELL_TRY(glass->init(info));
   return std::unique_ptr<GlassEffect>(std::move(glass));
 }
 
 EffectFactory factory(GlassKind kind) {
-  return [kind](const EffectCreateInfo& info) -> Result<std::unique_ptr<Effect>> {
-    auto g = create(kind, info);
-    if (!g) {
-      return g.error();
-    }
-    return std::unique_ptr<Effect>(std::move(*g));
-  };
+  return effect_factory([kind](const EffectCreateInfo& info) { return create(kind, info); });
 }
 
 } // namespace

@@ -323,30 +323,14 @@ private:
 } // namespace
 
 Result<std::unique_ptr<MirrorEffect>> create_mirror(const EffectCreateInfo& info) {
-  if (info.context == nullptr) {
-    return fail(ErrorCode::invalid_argument, "mirror: EffectCreateInfo::context is required");
-  }
-  if (info.frames_in_flight < 1 || info.frames_in_flight > 16) {
-    return fail(ErrorCode::invalid_argument, "mirror: EffectCreateInfo::frames_in_flight = " +
-                                                 std::to_string(info.frames_in_flight) +
-                                                 " is outside [1, 16]");
-  }
+  SNELL_TRY(check_create_info(info, "mirror"));
   auto effect = std::make_unique<Mirror>();
   SNELL_TRY(effect->init(info));
   return std::unique_ptr<MirrorEffect>(std::move(effect));
 }
 
 Result<void> register_mirror(EffectRegistry& registry) {
-  return registry.add(
-      "mirror",
-      [](const EffectCreateInfo& info) -> Result<std::unique_ptr<Effect>> {
-        auto e = create_mirror(info);
-        if (!e) {
-          return e.error();
-        }
-        return std::unique_ptr<Effect>(std::move(*e));
-      },
-      mirror_schema());
+  return registry.add("mirror", effect_factory(create_mirror), mirror_schema());
 }
 
 } // namespace snell

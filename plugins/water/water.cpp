@@ -281,14 +281,7 @@ private:
 } // namespace
 
 Result<std::unique_ptr<WaterEffect>> create_water(const EffectCreateInfo& info) {
-  if (info.context == nullptr) {
-    return fail(ErrorCode::invalid_argument, "water: EffectCreateInfo::context is required");
-  }
-  if (info.frames_in_flight < 1 || info.frames_in_flight > 16) {
-    return fail(ErrorCode::invalid_argument, "water: EffectCreateInfo::frames_in_flight = " +
-                                                 std::to_string(info.frames_in_flight) +
-                                                 " is outside [1, 16]");
-  }
+  SNELL_TRY(check_create_info(info, "water"));
   auto water = std::make_unique<Water>();
   if (auto r = water->init(info); !r) {
     return r.error();
@@ -297,16 +290,7 @@ Result<std::unique_ptr<WaterEffect>> create_water(const EffectCreateInfo& info) 
 }
 
 Result<void> register_water(EffectRegistry& registry) {
-  return registry.add(
-      "water",
-      [](const EffectCreateInfo& info) -> Result<std::unique_ptr<Effect>> {
-        auto w = create_water(info);
-        if (!w) {
-          return w.error();
-        }
-        return std::unique_ptr<Effect>(std::move(*w));
-      },
-      water_schema());
+  return registry.add("water", effect_factory(create_water), water_schema());
 }
 
 } // namespace snell
