@@ -66,9 +66,13 @@ public:
                                        .label = "mirror surface"},
                                       ubo_, sets_));
     sets_.set_image(kNormalMap, normal_map_.view(), ctx_->sampler(StandardSampler::linear_repeat));
-    variants_ = PipelineVariants(
+    GraphicsPipelineDesc desc =
         surface_pipeline_desc(info, "mirror surface pipeline", mirror::shaders::mirror_vert,
-                              mirror::shaders::mirror_frag, {sets_.layout()}));
+                              mirror::shaders::mirror_frag, {sets_.layout()});
+    // The mirror is opaque: it writes depth, so a surface drawn after it (another mirror, a
+    // glass pane) that lies behind it stays hidden.
+    desc.state.depth_write = true;
+    variants_ = PipelineVariants(std::move(desc));
     return {};
   }
 
@@ -126,8 +130,14 @@ public:
       const glm::vec2 size(static_cast<float>(reflection_.extent().width),
                            static_cast<float>(reflection_.extent().height));
       const float reach = normal_map_given_ ? p.distortion : 0.0f;
+      // A rough mirror's blur reads the target around each pixel, up to the widest lobe (what
+      // is infinitely far: 2 roughness^2 of tan(angle), shaders/snell/mirror.glsl), from mip
+      // texels up to twice that wide (trilinear: the next level too): that much more is drawn,
+      // so its mips hold the scene there and not an old clear.
+      const float focal = std::abs(r.proj[1][1]) * 0.5f * size.y;
+      const float blur = 4.0f * p.roughness * p.roughness * focal;
       scissor_ = screen_rect(main.proj * main.view, world_bounds_, reflection_.extent(),
-                             reach * size + 2.0f);
+                             reach * size + blur + 2.0f);
     }
     return pick_variant(p);
   }

@@ -7,6 +7,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <tuple>
 
 using namespace snell;
 using test::MirrorRig;
@@ -363,4 +364,51 @@ TEST_CASE("mirror: the host view's texture matrix maps the mirror to its screen 
     CAPTURE(local);
     CHECK(glm::distance(uv, screen) < 1e-4f);
   }
+}
+
+// Fails if a rough mirror's blur reads parts of the reflection target its pass did not draw
+// (they hold an old clear, black): a small mirror facing up reflects only the sky, so at any
+// roughness its centre keeps the sky's colour. And if a mirror writes no depth: a far mirror
+// drawn after a near one that hides it must not show through.
+TEST_CASE("mirror: a rough mirror keeps the sky's colour, a near mirror hides a far one") {
+  test::GpuFixture gpu;
+  MirrorRig rig;
+  rig.scene.sky.zenith = {0.2f, 0.4f, 0.8f};
+  rig.scene.sky.horizon = {0.2f, 0.4f, 0.8f};
+  rig.scene.sky.ground = {0.2f, 0.4f, 0.8f};
+  rig.camera.eye = {0.0f, 4.0f, 2.0f};
+  rig.camera.target = {0.0f, 0.0f, 0.0f};
+  rig.init_frame(gpu.ctx());
+  const Rect pad{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, {0.6f, 0.6f}};
+  MirrorParams p = test::rect_params(pad);
+  p.tint = glm::vec3(1.0f);
+  MirrorEffect& mirror = rig.add(gpu.ctx(), p);
+  const glm::vec2 centre = test::predict_pixel(rig.main_view().proj * rig.main_view().view,
+                                               pad.center, rig.width, rig.height);
+  for (const float roughness : {0.0f, 0.4f, 0.8f}) {
+    CAPTURE(roughness);
+    REQUIRE(mirror.set_param("roughness", roughness).has_value());
+    const glm::vec3 got = at(rig.render_mirrors(), centre);
+    CAPTURE(got);
+    CHECK(glm::length(got - rig.scene.sky.zenith) < 8.0f / 255.0f);
+  }
+
+  // A near mirror tinted red in front of a far one tinted green, the near one drawn first.
+  MirrorRig pair;
+  pair.scene.sky = rig.scene.sky;
+  pair.camera.eye = {0.0f, 1.0f, 5.0f};
+  pair.camera.target = {0.0f, 1.0f, 0.0f};
+  pair.init_frame(gpu.ctx());
+  for (const auto& [z, size, tint] :
+       {std::tuple{1.0f, 1.0f, glm::vec3(1, 0, 0)}, std::tuple{-2.0f, 4.0f, glm::vec3(0, 1, 0)}}) {
+    MirrorParams m = test::rect_params(
+        Rect{{0.0f, 1.0f, z}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f}, {size, size}});
+    m.tint = tint;
+    pair.add(gpu.ctx(), m);
+  }
+  const glm::vec2 middle = test::predict_pixel(pair.main_view().proj * pair.main_view().view,
+                                               {0.0f, 1.0f, 1.0f}, pair.width, pair.height);
+  const glm::vec3 seen = at(pair.render_mirrors(), middle);
+  CAPTURE(seen);
+  CHECK(seen.g < 0.05f);
 }
