@@ -40,7 +40,7 @@ const ParamTable<MirrorParams>& mirror_table() {
           .number("distortion", &M::distortion, 0.0f, 0.2f, "",
                   "Lookup offset (uv) per unit of normal-map slope")
           .number("normal_tiles", &M::normal_tiles, 0.01f, 1000.0f, "",
-                  "Normal-map tiles across the mirror")
+                  "Normal-map tiles per unit of the mesh's uv (a rectangle: across it)")
           .color("back_color", &M::back_color, "Colour of the mirror's back");
   return t;
 }

@@ -81,7 +81,8 @@ struct MirrorParams {
   /// Screen-space (uv) offset of the reflection lookup per unit of the normal map's slope.
   /// Default 0.02. [0, 0.2].
   float distortion = 0.02f;
-  /// Normal-map tiles across the mirror (uv scale). Default 1. [0.01, 1000].
+  /// Normal-map tiles per unit of the mesh's uv (the rectangle's uv spans it once, so: tiles
+  /// across it). Default 1. [0.01, 1000].
   float normal_tiles = 1.0f;
   /// What the back of the mirror shows (the camera behind the plane: no reflection is drawn).
   /// Default (0.2, 0.2, 0.2). Each in [0, 1].
