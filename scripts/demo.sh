@@ -23,7 +23,7 @@ echo "=== math sample -> out/math-sample.txt ==="
 # ==== Main job: demo scenes ======================================================================
 # Renders the built-in demo scenes headlessly (lavapipe unless a GPU is present; SNELL_DEVICE
 # chooses) to out/*.png with the `snell` CLI.
-for scene in pool window spheres; do
+for scene in pool window spheres room mirror; do
   echo "=== render $scene -> out/$scene.png ==="
   "$build_dir/samples/cli/snell" render --scene "$scene" --size 1280x720 --out "$out_dir/$scene.png"
 done
@@ -38,6 +38,20 @@ done
 echo "=== render samples/assets/glass_grid.gltf with glass -> out/glass_grid.png ==="
 "$build_dir/samples/cli/snell" render --scene samples/assets/glass_grid.gltf --effect glass \
   --size 1280x720 --out "$out_dir/glass_grid.png"
+echo "=== render spheres with a mirror and a glass probe -> out/spheres_cubemap.png ==="
+"$build_dir/samples/cli/snell" render --scene spheres --effect dynamic_cubemap \
+  --effect dynamic_cubemap --set dynamic_cubemap@2.node= --set dynamic_cubemap@2.center=2.6,0.8,1.2 \
+  --set dynamic_cubemap@2.radius=0.8 --set dynamic_cubemap@2.surface=glass --size 1280x720 \
+  --out "$out_dir/spheres_cubemap.png"
+echo "=== render room with a box-projected probe -> out/room_cubemap.png ==="
+"$build_dir/samples/cli/snell" render --scene room --effect dynamic_cubemap \
+  --set dynamic_cubemap.box_projection=true --size 1280x720 --out "$out_dir/room_cubemap.png"
+echo "=== render mirror with the mirror effect -> out/mirror.png ==="
+"$build_dir/samples/cli/snell" render --scene mirror --effect mirror --size 1280x720 \
+  --out "$out_dir/mirror.png"
+echo "=== render samples/assets/mirror_hall.gltf with its Mirror node -> out/mirror_hall.png ==="
+"$build_dir/samples/cli/snell" render --scene samples/assets/mirror_hall.gltf --effect mirror \
+  --set mirror.node=Mirror --size 1280x720 --out "$out_dir/mirror_hall.png"
 echo "=== render samples/assets/courtyard.gltf -> out/courtyard.png ==="
 "$build_dir/samples/cli/snell" render --scene samples/assets/courtyard.gltf --size 1280x720 \
   --out "$out_dir/courtyard.png"
