@@ -152,7 +152,7 @@ struct EffectCreateInfo {
 ///      this effect for the frame (nothing of it is recorded) and reports the error.
 ///   2. offscreen: record_passes(cmd, info, scene) outside any rendering.
 ///   3. opaque: the host draws its scene into its main colour + depth (leaving out the objects
-///      drawn_objects() names), then ends that rendering.
+///      drawn_objects() and replaced_objects() name), then ends that rendering.
 ///   4. snapshot: when an effect wants_snapshot(), the host copies colour + depth once
 ///      (SceneSnapshot::record) and passes it in FrameInfo::snapshot.
 ///   5. surfaces: inside the host's main rendering again (colour + depth loaded),
@@ -196,6 +196,11 @@ public:
   /// Objects of EffectCreateInfo::scene (indices into Scene::objects) that this effect draws
   /// itself with its own shading: the host's scene renderer leaves them out. Default none.
   [[nodiscard]] virtual Span<const int> drawn_objects() const { return {}; }
+  /// Objects of EffectCreateInfo::scene that this effect covers in the main view with its own
+  /// shading (phase 5) while they stay in every effect pass (a mirror's node: other mirrors and
+  /// probes still see it): the host leaves them out of its opaque pass only (phase 3), so their
+  /// pixels are not shaded twice. Leaving them in is correct too, only slower. Default none.
+  [[nodiscard]] virtual Span<const int> replaced_objects() const { return {}; }
 };
 
 /// Creates an effect.

@@ -87,6 +87,8 @@ public:
   const MirrorParams& params() const override { return params_.value(); }
   Span<const DebugTarget> debug_targets() const override { return debug_; }
   glm::vec4 plane() const override { return plane_; }
+  /// The node's mesh: covered by the mirror in the main view, still seen by other mirrors.
+  Span<const int> replaced_objects() const override { return surface_.objects(); }
 
   MirrorHostView host_view() const override {
     MirrorHostView v;

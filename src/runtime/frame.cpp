@@ -171,7 +171,17 @@ Result<FrameStats> FrameRenderer::render(SceneSource& source, const CameraDesc& 
     }
   }
 
-  // Phase 3: the opaque scene.
+  // Phase 3: the opaque scene, without what the effects draw over it (Effect::replaced_objects:
+  // still in their passes above, only not shaded twice here).
+  if (auto* renderer = dynamic_cast<SceneRenderer*>(&source)) {
+    std::vector<int> opaque_hidden = hidden;
+    for (Effect* e : active) {
+      for (const int object : e->replaced_objects()) {
+        opaque_hidden.push_back(object);
+      }
+    }
+    renderer->set_hidden_objects(opaque_hidden);
+  }
   s.timer.begin(cmd, "opaque");
   const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   s.target.begin_rendering(cmd, clear);
