@@ -40,6 +40,15 @@ public:
   /// The listed probe whose centre is nearest to `position` with something published, or
   /// nullptr when none is.
   [[nodiscard]] const ProbeView* nearest(const glm::vec3& position) const;
+  /// A consumer that samples `view` (a ProbeView this directory returned) above level 0 (a
+  /// rough surface) says so every frame it does: the probe then builds its mip chain with its
+  /// next capture. A probe builds the chain anyway for its first capture and when it samples
+  /// blurred itself; otherwise it skips that work (a blit chain per capture) and publishes one
+  /// level (mip_levels = 1, so roughness * (levels - 1) reads level 0).
+  void want_levels(const ProbeView* view);
+  /// For the probe `owner`: whether a consumer called want_levels() on its view since the last
+  /// call (which clears it).
+  [[nodiscard]] bool take_levels_wanted(const void* owner);
   /// How many probes are listed.
   [[nodiscard]] std::size_t size() const { return entries_.size(); }
 
@@ -47,6 +56,7 @@ private:
   struct Entry {
     const void* owner = nullptr;
     ProbeView view{};
+    bool levels_wanted = false; ///< want_levels() since the owner last asked.
   };
   std::vector<Entry> entries_{};
 };

@@ -111,6 +111,7 @@ public:
     SNELL_TRY(pick_variant(p));
     ++frames_;
     wanted_ = wanted_faces(p);
+    levels_wanted_ = directory_ != nullptr && directory_->take_levels_wanted(this);
     ticket_.reset();
     if (budget_ != nullptr && wanted_ != 0 && !whole_) {
       const float distance = glm::length(capture_center(info.time) - info.main_view.eye);
@@ -149,7 +150,13 @@ public:
     capture.mode = multiview ? CubeCaptureMode::multiview : CubeCaptureMode::six_pass;
     capture.time = info.time;
     capture.faces = direct ? 0x3Fu : faces;
-    capture.mips = publish && p.prefilter != CubemapPrefilter::none;
+    // The mip chain (a blit chain per capture: a fifth of the capture on lavapipe) only when
+    // something samples above level 0: this probe's own roughness, the GGX prefilter, a
+    // consumer that asked (ProbeDirectory::want_levels), and always the first capture.
+    const bool levels = p.prefilter != CubemapPrefilter::none &&
+                        (p.roughness > 0.0f || p.prefilter == CubemapPrefilter::ggx ||
+                         levels_wanted_ || publications_ == 0);
+    capture.mips = publish && levels;
     SNELL_TRY(record_cube_capture(cmd, scene, direct ? front_ : back_, capture, info.timer));
     faces_captured_ = capture.faces;
     if (direct) {
@@ -172,6 +179,7 @@ public:
       SNELL_TRY(prefilter_.record(cmd, job, info.timer));
     }
     if (publish) {
+      front_levels_ = levels;
       ++publications_;
       published_frame_ = frames_;
       requested_ = false;
@@ -194,8 +202,7 @@ public:
       b.model = glm::scale(glm::translate(glm::mat4(1.0f), p.center), glm::vec3(2.0f * p.radius));
     }
     b.eye = glm::vec4(info.main_view.eye, 1.0f);
-    const float levels =
-        p.prefilter == CubemapPrefilter::none ? 1.0f : static_cast<float>(sampled().mip_levels());
+    const float levels = static_cast<float>(published_levels());
     b.optics = glm::vec4(p.dispersion, p.ior, p.roughness, levels);
     b.tint = glm::vec4(p.tint, 1.0f);
     b.center = glm::vec4(capture_center(time_), 1.0f);
@@ -222,16 +229,22 @@ private:
       return;
     }
     const DynamicCubemapParams& p = params_.value();
-    directory_->publish(
-        this,
-        ProbeView{.cube = sampled().cube_view(),
-                  .sampler = ctx_->sampler(StandardSampler::linear_clamp),
-                  .mip_levels = p.prefilter == CubemapPrefilter::none ? 1u : sampled().mip_levels(),
-                  .center = published_center_,
-                  .box_projection = p.box_projection,
-                  .box_min = p.box_min,
-                  .box_max = p.box_max,
-                  .publications = publications_});
+    directory_->publish(this, ProbeView{.cube = sampled().cube_view(),
+                                        .sampler = ctx_->sampler(StandardSampler::linear_clamp),
+                                        .mip_levels = published_levels(),
+                                        .center = published_center_,
+                                        .box_projection = p.box_projection,
+                                        .box_min = p.box_min,
+                                        .box_max = p.box_max,
+                                        .publications = publications_});
+  }
+
+  /// The levels of the published cube that hold the capture: all, or 1 when its chain was not
+  /// built (nothing sampled above level 0, or prefilter = none).
+  std::uint32_t published_levels() const {
+    return front_levels_ && params_.value().prefilter != CubemapPrefilter::none
+               ? sampled().mip_levels()
+               : 1u;
   }
 
   /// The cube the surface and the directory sample: the GGX-filtered one, else the capture.
@@ -478,17 +491,19 @@ private:
   CubePrefilter prefilter_; ///< The GGX pass (made on first use).
   std::array<CubePrefilterBinding, 2> ggx_bindings_{}; ///< front and back cube -> filtered_.
   bool sampled_ggx_ = false;                           ///< The surface samples filtered_.
-  CaptureBudget* budget_ = nullptr;                    ///< The host's shared face budget, if any.
-  ProbeDirectory* directory_ = nullptr;                ///< The host's list of probes, if any.
-  glm::vec3 published_center_{0.0f};                   ///< Where the front cube was captured.
-  std::optional<std::uint32_t> ticket_{};              ///< This frame's budget request.
-  std::uint32_t wanted_ = 0;                           ///< Faces the policy wants this frame.
-  std::uint32_t done_ = 0;            ///< Faces of the back cube's round drawn so far.
-  std::uint32_t faces_captured_ = 0;  ///< Faces drawn this frame.
-  std::uint64_t frames_ = 0;          ///< Frames updated so far.
-  std::uint64_t published_frame_ = 0; ///< frames_ at the last publication.
-  std::uint64_t publications_ = 0;    ///< Complete cubes published.
-  bool requested_ = false;            ///< request_update() since the last publication.
+  bool levels_wanted_ = false;            ///< A consumer samples the published cube blurred.
+  bool front_levels_ = false;             ///< The published cube's mip chain was built.
+  CaptureBudget* budget_ = nullptr;       ///< The host's shared face budget, if any.
+  ProbeDirectory* directory_ = nullptr;   ///< The host's list of probes, if any.
+  glm::vec3 published_center_{0.0f};      ///< Where the front cube was captured.
+  std::optional<std::uint32_t> ticket_{}; ///< This frame's budget request.
+  std::uint32_t wanted_ = 0;              ///< Faces the policy wants this frame.
+  std::uint32_t done_ = 0;                ///< Faces of the back cube's round drawn so far.
+  std::uint32_t faces_captured_ = 0;      ///< Faces drawn this frame.
+  std::uint64_t frames_ = 0;              ///< Frames updated so far.
+  std::uint64_t published_frame_ = 0;     ///< frames_ at the last publication.
+  std::uint64_t publications_ = 0;        ///< Complete cubes published.
+  bool requested_ = false;                ///< request_update() since the last publication.
   bool whole_ = false; ///< Capture all six faces into the front now (first, resized, ...).
   Surfaces owner_;
   UniformRing ubo_;

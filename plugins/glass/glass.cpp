@@ -277,6 +277,10 @@ public:
       bound_probe_view_ = probe_view;
     }
     if (probe != nullptr) {
+      if (std::any_of(drawn_.begin(), drawn_.end(),
+                      [](const Drawn& d) { return d.record.normal.w > 0.0f; })) {
+        probes_->want_levels(probe); // a rough surface reads the probe's blurred levels
+      }
       b.probe_center = glm::vec4(probe->center, static_cast<float>(probe->mip_levels));
       b.probe_box_min = glm::vec4(probe->box_min, probe->box_projection ? 1.0f : 0.0f);
       b.probe_box_max = glm::vec4(probe->box_max, 0.0f);

@@ -24,6 +24,25 @@ void ProbeDirectory::withdraw(const void* owner) {
                  entries_.end());
 }
 
+void ProbeDirectory::want_levels(const ProbeView* view) {
+  for (Entry& e : entries_) {
+    if (&e.view == view) {
+      e.levels_wanted = true;
+    }
+  }
+}
+
+bool ProbeDirectory::take_levels_wanted(const void* owner) {
+  for (Entry& e : entries_) {
+    if (e.owner == owner) {
+      const bool wanted = e.levels_wanted;
+      e.levels_wanted = false;
+      return wanted;
+    }
+  }
+  return false;
+}
+
 const ProbeView* ProbeDirectory::nearest(const glm::vec3& position) const {
   const ProbeView* best = nullptr;
   float best_distance = std::numeric_limits<float>::infinity();

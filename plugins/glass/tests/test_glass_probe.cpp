@@ -53,6 +53,17 @@ TEST_CASE("glass: the Fresnel reflection uses the nearest published probe") {
   CHECK(probed.r > 150);
   CHECK(probed.g < 40);
 
+  // The probe builds its mip chain for its first capture, then only when asked: smooth glass
+  // does not ask (one level published), rough glass does (every level, from the next capture).
+  (void)rig.render_effects(both);
+  REQUIRE(rig.probes.nearest(p.center) != nullptr);
+  CHECK(rig.probes.nearest(p.center)->mip_levels == 1);
+  g.roughness = 0.3f;
+  rig.set(g);
+  (void)rig.render_effects(both); // glass asks during this frame's draw
+  (void)rig.render_effects(both); // the probe's next capture builds the chain
+  CHECK(rig.probes.nearest(p.center)->mip_levels > 1);
+
   probe.reset(); // withdrawn: the sky again
   CHECK(rig.probes.size() == 0);
   const glm::ivec3 after = red_at(rig.render());
