@@ -29,6 +29,8 @@ PACKAGES=(
   # `snell view` (SNELL_BUILD_VIEWER, ON when both are found): the window and the panel.
   libglfw3-dev
   libimgui-dev
+  # The viewer's tests open a real window on a virtual X server (tests/viewer).
+  xvfb
 )
 
 missing=()

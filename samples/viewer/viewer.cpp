@@ -172,6 +172,8 @@ private:
   bool show_thumbnails_ = false;
   bool show_passes_ = true;
   bool quit_ = false;
+  bool quit_after_frame_ = false; ///< A script's `quit`: after the frame of its time.
+  std::uint64_t minimised_ticks_ = 0;
   bool recreate_ = false;      ///< The swapchain must be recreated before the next frame.
   bool script_hidden_ = false; ///< A script's `minimize` hid the window (no window manager).
   std::uint64_t minimise_tick_ = 0;
@@ -445,8 +447,12 @@ int Viewer::run() {
     if (minimised()) {
       // Nothing to present to. Wait for events (a restore), a tick at a time so that a
       // script's clock goes on.
+      if (quit_after_frame_) {
+        break;
+      }
       glfwWaitEventsTimeout(kScriptStep);
       ++ticks_;
+      ++minimised_ticks_;
       last_frame_ = Clock::now();
       continue;
     }
@@ -469,7 +475,7 @@ int Viewer::run() {
     }
     if (*drawn) {
       ++ticks_; // a script's clock: one step a frame drawn
-      if (options_.frames > 0 && frame_index_ >= options_.frames) {
+      if ((options_.frames > 0 && frame_index_ >= options_.frames) || quit_after_frame_) {
         quit_ = true;
       }
     }
@@ -487,10 +493,12 @@ int Viewer::run() {
            " screenshot(s) was drawn");
     exit_code_ = 1;
   }
-  std::printf("snell view: %llu frames, %u swapchain recreation(s); median frame %.2f ms CPU, "
-              "%.2f ms GPU (scene passes)\n",
-              static_cast<unsigned long long>(frame_index_), resizes_, median(cpu_frame_ms_),
+  std::printf("snell view: %llu frames, %u swapchain recreation(s), %llu tick(s) minimised; "
+              "median frame %.2f ms CPU, %.2f ms GPU (scene passes)\n",
+              static_cast<unsigned long long>(frame_index_), resizes_,
+              static_cast<unsigned long long>(minimised_ticks_), median(cpu_frame_ms_),
               median(gpu_frame_ms_));
+  std::fflush(stdout);
   return exit_code_;
 }
 
@@ -651,7 +659,7 @@ void Viewer::apply(const ScriptAction& a) {
     glfwRestoreWindow(host_.window);
     return;
   case Kind::quit:
-    quit_ = true;
+    quit_after_frame_ = true; // the frame of this time is still drawn (and captured)
     return;
   }
 }
