@@ -174,6 +174,7 @@ private:
   bool quit_ = false;
   bool quit_after_frame_ = false; ///< A script's `quit`: after the frame of its time.
   std::uint64_t minimised_ticks_ = 0;
+  std::uint32_t out_of_date_ = 0, suboptimal_ = 0; ///< What acquire and present reported.
   bool recreate_ = false;      ///< The swapchain must be recreated before the next frame.
   bool script_hidden_ = false; ///< A script's `minimize` hid the window (no window manager).
   std::uint64_t minimise_tick_ = 0;
@@ -183,7 +184,7 @@ private:
   bool dragging_[3] = {false, false, false};
   Clock::time_point start_ = Clock::now();
   Clock::time_point last_frame_ = Clock::now();
-  std::vector<double> cpu_frame_ms_, gpu_frame_ms_; ///< For the summary at exit.
+  std::vector<double> cpu_frame_ms_, gpu_frame_ms_, gpu_ui_ms_; ///< For the summary at exit.
   std::uint32_t resizes_ = 0;
   int exit_code_ = 0;
 };
@@ -493,11 +494,12 @@ int Viewer::run() {
            " screenshot(s) was drawn");
     exit_code_ = 1;
   }
-  std::printf("snell view: %llu frames, %u swapchain recreation(s), %llu tick(s) minimised; "
-              "median frame %.2f ms CPU, %.2f ms GPU (scene passes)\n",
-              static_cast<unsigned long long>(frame_index_), resizes_,
+  std::printf("snell view: %llu frames, %u swapchain recreation(s) (out of date %u, suboptimal "
+              "%u), %llu tick(s) minimised; median frame %.2f ms CPU, %.2f ms GPU scene passes + "
+              "%.2f ms GPU blit and UI\n",
+              static_cast<unsigned long long>(frame_index_), resizes_, out_of_date_, suboptimal_,
               static_cast<unsigned long long>(minimised_ticks_), median(cpu_frame_ms_),
-              median(gpu_frame_ms_));
+              median(gpu_frame_ms_), median(gpu_ui_ms_));
   std::fflush(stdout);
   return exit_code_;
 }
@@ -513,6 +515,8 @@ Result<void> Viewer::finish_slot(FrameSlot& s) {
     for (const PassTime& p : *passes) {
       if (p.name == "frame") {
         gpu_frame_ms_.push_back(p.ms);
+      } else if (p.name == "ui") {
+        gpu_ui_ms_.push_back(p.ms);
       }
     }
     cpu_frame_ms_.push_back(s.cpu_ms);
@@ -886,10 +890,12 @@ Result<bool> Viewer::frame() {
   const VkResult acquired =
       vkAcquireNextImageKHR(d, swapchain_.handle(), UINT64_MAX, s.acquired, VK_NULL_HANDLE, &image);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+    ++out_of_date_;
     recreate_ = true; // the semaphore was not signalled: nothing to undo
     return false;
   }
   if (acquired == VK_SUBOPTIMAL_KHR) {
+    ++suboptimal_;
     recreate_ = true; // still usable: draw this frame, recreate after presenting it
   } else if (acquired != VK_SUCCESS) {
     return vk_failure("vkAcquireNextImageKHR", acquired);
@@ -971,6 +977,7 @@ Result<bool> Viewer::frame() {
   pi.pImageIndices = &image;
   const VkResult presented = vkQueuePresentKHR(host_.queue, &pi);
   if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR) {
+    ++(presented == VK_SUBOPTIMAL_KHR ? suboptimal_ : out_of_date_);
     recreate_ = true;
   } else if (presented != VK_SUCCESS) {
     return vk_failure("vkQueuePresentKHR", presented);

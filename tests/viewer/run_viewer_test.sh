@@ -114,7 +114,7 @@ stress)
   expect_output "snell view: 300 frames, "
   grep -qE "300 frames, ([2-9]|[1-9][0-9]+) swapchain recreation" out.txt ||
     fail "two resizes did not recreate the swapchain twice"
-  grep -qE "swapchain recreation\(s\), [1-9][0-9]* tick\(s\) minimised" out.txt ||
+  grep -qE "\), [1-9][0-9]* tick\(s\) minimised" out.txt ||
     fail "the minimise left no frame out"
   [[ "$(png_size after_restore.png)" == "240x180" ]] || fail "after the resizes: $(png_size after_restore.png)"
   echo "stress: $((SECONDS - start)) s"
