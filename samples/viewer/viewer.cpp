@@ -207,11 +207,14 @@ Result<void> Viewer::init() {
   // Callbacks before Dear ImGui's backend installs its own (it chains to these).
   glfwSetWindowUserPointer(host_.window, this);
   glfwSetFramebufferSizeCallback(host_.window, [](GLFWwindow* w, int, int) {
-    static_cast<Viewer*>(glfwGetWindowUserPointer(w))->recreate_ = true;
+    if (auto* viewer = static_cast<Viewer*>(glfwGetWindowUserPointer(w))) {
+      viewer->recreate_ = true;
+    }
   });
   glfwSetKeyCallback(host_.window, [](GLFWwindow* w, int key, int, int action, int) {
-    if (action == GLFW_PRESS) {
-      static_cast<Viewer*>(glfwGetWindowUserPointer(w))->pressed_keys_.push_back(key);
+    auto* viewer = static_cast<Viewer*>(glfwGetWindowUserPointer(w));
+    if (viewer != nullptr && action == GLFW_PRESS) {
+      viewer->pressed_keys_.push_back(key);
     }
   });
 
@@ -690,10 +693,12 @@ void Viewer::remove_marked_effects() {
       ++it;
       continue;
     }
-    // Frames up to frame_index_ may still use it: destroyed once they finished. A probe leaves
-    // the directory now, so that no later frame's glass samples its cube.
+    // Frames up to the one being built (its thumbnails may show the effect's targets) may still
+    // use it: destroyed once they finished. A probe leaves the directory now, so that no later
+    // frame's glass samples its cube (dynamic_cubemap publishes with its own address, which is
+    // its Effect's: single inheritance).
     session_.probes.withdraw(it->effect.get());
-    graveyard_.retire(frame_index_, std::move(it->effect));
+    graveyard_.retire(frame_index_ + 1, std::move(it->effect));
     it = effects_.erase(it);
   }
 }
@@ -921,6 +926,14 @@ Result<bool> Viewer::frame() {
   last_frame_ = now;
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  {
+    // The UI is laid out for the image it is drawn into: the swapchain's extent, which can lead
+    // GLFW's idea of the window size by a frame while a resize is under way.
+    ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 scale = io.DisplayFramebufferScale;
+    io.DisplaySize = ImVec2(static_cast<float>(extent.width) / std::max(scale.x, 1e-3f),
+                            static_cast<float>(extent.height) / std::max(scale.y, 1e-3f));
+  }
   ImGui::NewFrame();
   handle_keys();
   camera_input(dt);
