@@ -608,9 +608,14 @@ void Viewer::apply(const ScriptAction& a) {
     }
     return;
   }
-  case Kind::add:
+  case Kind::add: {
+    const std::size_t before = effects_.size();
     add_effect(a.effect);
+    if (effects_.size() == before) {
+      exit_code_ = 1; // add_effect reported why
+    }
     return;
+  }
   case Kind::remove: {
     std::vector<std::size_t> targets = find_instances(effects_, a.effect);
     if (targets.empty()) {
