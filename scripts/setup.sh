@@ -26,6 +26,11 @@ PACKAGES=(
   clang-format
   libclang-rt-14-dev
   python3
+  # `snell view` (SNELL_BUILD_VIEWER, ON when both are found): the window and the panel.
+  libglfw3-dev
+  libimgui-dev
+  # The viewer's tests open a real window on a virtual X server (tests/viewer).
+  xvfb
 )
 
 missing=()

@@ -76,6 +76,7 @@ std::string help_text() {
 usage:
   snell render [options]     render a scene (with effects) to PNG
   snell bench [options]      time plain frames against frames with the effects (GPU timestamps)
+  snell view [options]       open a window: fly around the scene, tune the effects live
   snell list                 list the effects and their parameters (name, type, default, range)
   snell info                 list the Vulkan devices and the one chosen
   snell --help               this text
@@ -106,6 +107,14 @@ bench options (as render, plus):
   --frames N          frames of each kind (plain, with effects), >= 3 [60]
   --json FILE         write the results as JSON: plain_ms, effect_ms, ratio, passes, device
 
+view options (as render, without --out and --json, plus):
+  --size WxH          initial window size [1280x720]
+  --frames N          quit after N frames [run until the window is closed]
+  --debug-targets     start with the debug-target thumbnails shown (F3 toggles)
+  --present MODE      fifo (vsync) or mailbox [fifo]
+  --script FILE       timed actions: camera moves, parameter sets, screenshots, quit;
+                      time then advances 1/60 s a frame (see docs/viewer.md)
+
 Output files are written whole or not at all (an existing file is kept on failure).
 On a terminal, work longer than about 2 s shows a progress line on stderr.
 Exit codes: 0 success, 1 failure (rendering, or a file that cannot be read or
@@ -127,13 +136,16 @@ Result<Command> parse(const std::vector<std::string>& args) {
     }
     return cmd;
   }
-  if (cmd.name != "render" && cmd.name != "bench") {
+  if (cmd.name != "render" && cmd.name != "bench" && cmd.name != "view") {
     return fail(ErrorCode::invalid_argument,
                 "unknown command '" + cmd.name +
-                    "' (commands: render, bench, list, info; see --help)");
+                    "' (commands: render, bench, view, list, info; see --help)");
   }
   if (cmd.name == "bench") {
     cmd.render.frames = 60;
+  }
+  if (cmd.name == "view") {
+    cmd.render.frames = 0; // until the window is closed
   }
   RenderOptions& o = cmd.render;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -157,8 +169,15 @@ Result<Command> parse(const std::vector<std::string>& args) {
     Result<void> ok;
     if (a == "--scene") {
       o.scene = v;
-    } else if (a == "--out") {
+    } else if (a == "--out" && cmd.name != "view") {
       o.out = v;
+    } else if (a == "--script" && cmd.name == "view") {
+      o.script = v;
+    } else if (a == "--present" && cmd.name == "view") {
+      if (v != "fifo" && v != "mailbox") {
+        return fail(ErrorCode::invalid_argument, "--present: '" + v + "' must be fifo or mailbox");
+      }
+      o.present = v;
     } else if (a == "--device") {
       o.device = v;
     } else if (a == "--effect") {

@@ -14,7 +14,7 @@
 
 namespace snell::cli {
 
-/// Options of `snell render`.
+/// Options of `snell render` (and of `bench` and `view`, which take the same ones plus a few).
 struct RenderOptions {
   std::string scene = "pool"; ///< Built-in name or a .gltf/.glb path.
   std::uint32_t width = 1280; ///< --size WxH.
@@ -35,11 +35,15 @@ struct RenderOptions {
   /// --capture-budget N: cube faces all probes together capture a frame (CaptureBudget).
   std::optional<std::uint32_t> capture_budget;
   std::string json; ///< bench: --json FILE.
+  /// view: --script FILE, timed actions (docs/viewer.md). "" for none.
+  std::string script;
+  /// view: --present fifo|mailbox (VK_PRESENT_MODE_*_KHR). Default fifo.
+  std::string present = "fifo";
 };
 
 /// A parsed command line.
 struct Command {
-  std::string name; ///< "render", "bench", "list", "info", "help".
+  std::string name; ///< "render", "bench", "view", "list", "info", "help".
   RenderOptions render;
 };
 

@@ -13,5 +13,8 @@ int run_list();
 int run_render(const RenderOptions& options);
 /// `snell bench`: plain frames against frames with effects, medians and ratio, optional JSON.
 int run_bench(const RenderOptions& options);
+/// `snell view`: the interactive viewer. Defined by samples/viewer, built when
+/// SNELL_BUILD_VIEWER is ON (then SNELL_HAVE_VIEWER is defined for main.cpp).
+int run_view(const RenderOptions& options);
 
 } // namespace snell::cli

@@ -29,6 +29,16 @@ int main(int argc, char** argv) {
     if (cmd->name == "bench") {
       return snell::cli::run_bench(cmd->render);
     }
+    if (cmd->name == "view") {
+#if defined(SNELL_HAVE_VIEWER)
+      return snell::cli::run_view(cmd->render);
+#else
+      std::fprintf(stderr, "snell: view: this snell was built without the viewer "
+                           "(SNELL_BUILD_VIEWER=OFF: it needs GLFW and Dear ImGui, Debian "
+                           "libglfw3-dev and libimgui-dev)\n");
+      return 2;
+#endif
+    }
     return snell::cli::run_render(cmd->render);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "snell: internal error: %s\n", e.what());

@@ -78,7 +78,8 @@ CameraDesc choose_camera(const Scene& scene, const RenderOptions& o) {
 
 } // namespace
 
-Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_code) {
+Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_code,
+                                              const SessionHooks& hooks) {
   auto s = std::make_unique<Session>();
   exit_code = 2;
   if (auto r = register_builtin_effects(s->registry); !r) {
@@ -131,7 +132,7 @@ Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_
   ContextDesc cd;
   cd.validation = o.validation;
   cd.device = o.device;
-  auto ctx = Context::create(cd);
+  auto ctx = hooks.make_context ? hooks.make_context() : Context::create(cd);
   if (!ctx) {
     return ctx.error();
   }
@@ -141,18 +142,21 @@ Result<std::unique_ptr<Session>> open_session(const RenderOptions& o, int& exit_
     return renderer.error();
   }
   s->renderer.emplace(std::move(*renderer));
-  auto frame = FrameRenderer::create(*s->ctx, FrameDesc{.width = o.width,
-                                                        .height = o.height,
-                                                        .color = ColorFormat::rgba8_srgb,
-                                                        .debug_targets = o.debug_targets});
-  if (!frame) {
-    return frame.error();
+  if (hooks.frame_renderer) {
+    auto frame = FrameRenderer::create(*s->ctx, FrameDesc{.width = o.width,
+                                                          .height = o.height,
+                                                          .color = ColorFormat::rgba8_srgb,
+                                                          .debug_targets = o.debug_targets});
+    if (!frame) {
+      return frame.error();
+    }
+    s->frame.emplace(std::move(*frame));
   }
-  s->frame.emplace(std::move(*frame));
-  EffectCreateInfo info;
+  EffectCreateInfo& info = s->effect_info;
   info.context = &*s->ctx;
-  info.color_format = s->frame->target().vk_color_format();
+  info.color_format = to_vk_format(ColorFormat::rgba8_srgb); // the frame's output format
   info.depth_format = VK_FORMAT_D32_SFLOAT;
+  info.frames_in_flight = hooks.frames_in_flight;
   info.scene = &s->scene;
   info.probes = &s->probes;
   if (o.capture_budget) {

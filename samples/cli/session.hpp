@@ -1,4 +1,5 @@
-// The state one `snell render` / `snell bench` run builds: scene, context, renderer, effects.
+// The state one `snell render` / `snell bench` / `snell view` run builds: scene, context,
+// renderer, effects.
 #pragma once
 
 #include "cli_args.hpp"
@@ -9,6 +10,7 @@
 #include <snell/probe_directory.hpp>
 #include <snell/scene_renderer.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,13 +27,27 @@ struct Session {
   ProbeDirectory probes;               ///< Probes published for the other effects.
   std::vector<std::unique_ptr<Effect>> effects;
   CameraDesc camera;
+  /// What the effects were created with (`snell view` creates more with it at run time).
+  EffectCreateInfo effect_info;
 
   /// Renders one frame at `time`, with the effects when `with_effects`.
   Result<FrameStats> render(float time, bool with_effects);
 };
 
+/// How a host other than `render` / `bench` builds its session (`snell view`).
+struct SessionHooks {
+  /// Makes the context once the arguments and the scene are checked (`view` opens its window
+  /// and adopts its own device here). Default: Context::create from --device and --validation.
+  std::function<Result<Context>()> make_context;
+  /// Create Session::frame (an owned target of --size, waited for each frame). Default true.
+  bool frame_renderer = true;
+  /// EffectCreateInfo::frames_in_flight of the effects. Default 2.
+  std::uint32_t frames_in_flight = 2;
+};
+
 /// Builds a session. `exit_code` is 2 for argument errors (unknown scene, effect, parameter or
 /// bad value: checked before any GPU work) and 1 for failures.
-Result<std::unique_ptr<Session>> open_session(const RenderOptions& options, int& exit_code);
+Result<std::unique_ptr<Session>> open_session(const RenderOptions& options, int& exit_code,
+                                              const SessionHooks& hooks = {});
 
 } // namespace snell::cli
