@@ -32,8 +32,12 @@ struct RasterState {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   std::uint32_t view_mask = 0; ///< Multiview mask (0 = single view; 0b111111 cube). Default 0.
   bool vertex_input = true;    ///< Read snell::Vertex from binding 0 (else none). Default true.
-  bool depth_test = true;      ///< Test against the depth attachment (if any). Default true.
-  bool depth_write = true;     ///< Write depth (if any). Default true.
+  /// With vertex_input: the snell::Vertex attributes bound, one bit per shader location
+  /// (0 position, 1 normal, 2 tangent, 3 uv). Default 0xF (all). Pipeline::create binds only
+  /// those its vertex shader declares as inputs.
+  std::uint32_t vertex_attributes = 0xFu;
+  bool depth_test = true;  ///< Test against the depth attachment (if any). Default true.
+  bool depth_write = true; ///< Write depth (if any). Default true.
   VkCompareOp depth_compare = VK_COMPARE_OP_LESS; ///< Default LESS (depth range [0,1]).
   /// Straight-alpha "over" blending on every attachment: rgb = src.rgb * a + dst.rgb * (1 - a),
   /// alpha = a + dst.a * (1 - a). Default false (opaque).
@@ -48,6 +52,10 @@ struct RasterState {
 create_graphics_pipeline(VkDevice device, VkShaderModule vertex, VkShaderModule fragment,
                          VkPipelineLayout layout, const RasterState& state, std::string_view name,
                          Span<const std::uint32_t> constants = {});
+
+/// The input locations a vertex shader's SPIR-V declares (one bit per location; all bits when
+/// the words cannot be read as SPIR-V).
+[[nodiscard]] std::uint32_t vertex_input_locations(Span<const std::uint32_t> spirv);
 
 /// A graphics pipeline described with SPIR-V: what Pipeline::create takes.
 struct GraphicsPipelineDesc {

@@ -7,6 +7,8 @@
 #include "vk_util.hpp"
 
 #include <cstddef>
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,13 +59,20 @@ Result<VkPipeline> create_graphics_pipeline(VkDevice device, VkShaderModule vert
       {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, tangent))},
       {3, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, uv))},
   };
+  VkVertexInputAttributeDescription used[4]{};
   auto vi = vk_init<VkPipelineVertexInputStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
   if (desc.vertex_input) {
     vi.vertexBindingDescriptionCount = 1;
     vi.pVertexBindingDescriptions = &binding;
-    vi.vertexAttributeDescriptionCount = 4;
-    vi.pVertexAttributeDescriptions = attributes;
+    // Only the locations the vertex shader reads: a bound attribute it does not consume is a
+    // validation (performance) message.
+    for (const VkVertexInputAttributeDescription& a : attributes) {
+      if ((desc.vertex_attributes & (1u << a.location)) != 0) {
+        used[vi.vertexAttributeDescriptionCount++] = a;
+      }
+    }
+    vi.pVertexAttributeDescriptions = used;
   }
   auto ia = vk_init<VkPipelineInputAssemblyStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
@@ -163,6 +172,32 @@ struct ModuleScope {
 
 } // namespace
 
+std::uint32_t vertex_input_locations(Span<const std::uint32_t> spirv) {
+  // Instructions follow the 5-word header: word 0 holds (word count << 16) | opcode.
+  constexpr std::uint32_t kOpDecorate = 71, kOpVariable = 59, kLocation = 30, kInput = 1;
+  std::map<std::uint32_t, std::uint32_t> locations; // id -> Location
+  std::set<std::uint32_t> inputs;                   // ids of Input variables
+  for (std::size_t i = 5; i < spirv.size();) {
+    const std::uint32_t count = spirv[i] >> 16, op = spirv[i] & 0xFFFFu;
+    if (count == 0 || i + count > spirv.size()) {
+      return ~0u; // not SPIR-V we can read: bind every attribute
+    }
+    if (op == kOpDecorate && count >= 4 && spirv[i + 2] == kLocation) {
+      locations[spirv[i + 1]] = spirv[i + 3];
+    } else if (op == kOpVariable && count >= 4 && spirv[i + 3] == kInput) {
+      inputs.insert(spirv[i + 2]);
+    }
+    i += count;
+  }
+  std::uint32_t mask = 0;
+  for (const auto& [id, location] : locations) {
+    if (inputs.count(id) != 0 && location < 32) {
+      mask |= 1u << location;
+    }
+  }
+  return mask;
+}
+
 Result<Pipeline> Pipeline::create(const Context& ctx, const GraphicsPipelineDesc& desc) {
   const std::string label = desc.label != nullptr ? desc.label : "graphics pipeline";
   if (desc.vertex.empty() || desc.fragment.empty()) {
@@ -189,8 +224,10 @@ Result<Pipeline> Pipeline::create(const Context& ctx, const GraphicsPipelineDesc
     return frag.error();
   }
   scope.modules[1] = *frag;
+  RasterState state = desc.state;
+  state.vertex_attributes &= vertex_input_locations(desc.vertex);
   auto pipeline =
-      create_graphics_pipeline(device, *vert, *frag, p.layout_, desc.state, label, desc.constants);
+      create_graphics_pipeline(device, *vert, *frag, p.layout_, state, label, desc.constants);
   if (!pipeline) {
     return pipeline.error();
   }

@@ -1,6 +1,7 @@
 #include "gpu_fixture.hpp"
 
 #include <snell/buffer.hpp>
+#include <snell/pipeline.hpp>
 
 #include <cstring>
 
@@ -121,4 +122,21 @@ TEST_CASE("resources: texture upload with GPU mips, cube target views, samplers"
   auto bad = Sampler::create(gpu.ctx(), SamplerDesc{.max_anisotropy = 0.5f});
   REQUIRE_FALSE(bad.has_value());
   CHECK(bad.error().message.find("max_anisotropy") != std::string::npos);
+}
+
+// Fails if a pipeline binds attributes its vertex shader does not read (a validation message) or
+// drops one it reads: the input locations come from the SPIR-V itself.
+TEST_CASE("pipeline: vertex_input_locations reads the vertex shader's input locations") {
+  const auto op = [](std::uint32_t count, std::uint32_t code) { return count << 16 | code; };
+  const std::vector<std::uint32_t> spirv = {
+      0x07230203u, 0x00010300u, 0u, 10u, 0u, // header
+      op(4, 71),   5,           30, 3,       // OpDecorate %5 Location 3
+      op(4, 71),   6,           30, 1,       // OpDecorate %6 Location 1
+      op(4, 71),   7,           30, 0,       // OpDecorate %7 Location 0
+      op(4, 59),   4,           5,  1,       // %5 = OpVariable %4 Input
+      op(4, 59),   4,           6,  3,       // %6 = OpVariable %4 Output (not an input)
+      op(4, 59),   4,           7,  1};      // %7 = OpVariable %4 Input
+  CHECK(vertex_input_locations(spirv) == ((1u << 3) | 1u));
+  const std::vector<std::uint32_t> truncated = {0x07230203u, 0x00010300u, 0u, 10u, 0u, op(9, 71)};
+  CHECK(vertex_input_locations(truncated) == ~0u); // unreadable: bind everything
 }
