@@ -33,9 +33,9 @@ struct FloatImage {
 /// Reads a render target's depth image (after end_rendering) as floats in [0,1].
 [[nodiscard]] Result<std::vector<float>> read_depth(const Context& ctx, const RenderTarget& target);
 
-/// Reads an effect's debug target (its `mip` level and `layer`) as floats: colour formats RGBA8 UNORM/SRGB (sRGB
-/// decoded to linear) and RGBA16F, or D32 depth (in the red channel). The effect's passes must
-/// have completed. Errors: unsupported for other formats.
+/// Reads an effect's debug target (its `mip` level and `layer`) as floats: colour formats RGBA8
+/// UNORM/SRGB (sRGB decoded to linear) and RGBA16F, or D32 depth (in the red channel). The effect's
+/// passes must have completed. Errors: unsupported for other formats.
 [[nodiscard]] Result<FloatImage> read_debug_target(const Context& ctx, const DebugTarget& target);
 
 /// Tone-maps linear HDR values to sRGB-encoded RGBA8: `exposure` multiplies, then the

@@ -32,9 +32,9 @@ public:
   explicit ScaledTarget(const ScaledTargetDesc& desc) : desc_(desc) {}
 
   /// Makes the target match `output` at the current scale: creates it the first time and
-  /// recreates it when the size or the mip setting changed, retiring the old one into `release` at `frame_index`.
-  /// Returns true when a new image was made (descriptors that point at it must be updated).
-  /// Errors: invalid_argument (scale outside (0, 4], an empty output), out_of_memory.
+  /// recreates it when the size or the mip setting changed, retiring the old one into `release` at
+  /// `frame_index`. Returns true when a new image was made (descriptors that point at it must be
+  /// updated). Errors: invalid_argument (scale outside (0, 4], an empty output), out_of_memory.
   [[nodiscard]] Result<bool> fit(const Context& ctx, VkExtent2D output, std::uint64_t frame_index,
                                  DeferredRelease& release);
   /// Changes the scale; the next fit() applies it.
