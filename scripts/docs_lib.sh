@@ -36,3 +36,23 @@ if [[ ! -x "$snell" ]]; then
   echo "  (or point SNELL at a built snell binary)" >&2
   exit 1
 fi
+
+# docs_render NAME SCENE WxH CAMERA_ARRAY_NAME [extra CLI arguments: --effect, --set, ...]
+# Renders $out_dir/NAME.png with the CLI and the camera arguments held in the array named
+# CAMERA_ARRAY_NAME, prints the command line (the pages quote it), counts it in `count`, and
+# stops the calling script on failure with the CLI's output.
+docs_render() {
+  local name="$1" scene="$2" size="$3" cam_name="$4"
+  shift 4
+  local -n cam="$cam_name"
+  local log
+  if ! log="$("$snell" render --scene "$scene" --size "$size" \
+    --out "$out_dir/$name.png" "${cam[@]}" "$@" 2>&1)"; then
+    echo "$log" >&2
+    echo "$(basename "$0"): rendering $name.png failed" >&2
+    exit 1
+  fi
+  count=$((count + 1))
+  echo "  snell render --scene $scene --size $size --out ${out_dir#"$repo_root"/}/$name.png" \
+    "${cam[@]}" "$@"
+}

@@ -69,70 +69,54 @@ probes() {
   done
 }
 
-count=0
-# render NAME SCENE WxH CAMERA_ARRAY_NAME [extra CLI arguments: --effect, --set, ...]
-render() {
-  local name="$1" scene="$2" size="$3" cam_name="$4"
-  shift 4
-  local -n cam="$cam_name"
-  local log
-  if ! log="$("$snell" render --scene "$scene" --size "$size" \
-    --out "$out_dir/$name.png" "${cam[@]}" "$@" 2>&1)"; then
-    echo "$log" >&2
-    echo "render_cubemap_docs.sh: rendering $name.png failed" >&2
-    exit 1
-  fi
-  count=$((count + 1))
-  echo "  snell render --scene $scene --size $size --out ${out_dir#"$repo_root"/}/$name.png" \
-    "${cam[@]}" "$@"
-}
+count=0 # pictures rendered (docs_render in scripts/docs_lib.sh counts them)
 
 echo "rendering into ${out_dir#"$repo_root"/} with $snell"
 # The page's first row: the default mirror, glass, roughness 0.4, scene camera.
-render spheres_reflect spheres 640x360 cam_default --effect dynamic_cubemap
-render spheres_glass spheres 640x360 cam_default --effect dynamic_cubemap \
+docs_render spheres_reflect spheres 640x360 cam_default --effect dynamic_cubemap
+docs_render spheres_glass spheres 640x360 cam_default --effect dynamic_cubemap \
   --set dynamic_cubemap.surface=glass
-render spheres_rough spheres 640x360 cam_default --effect dynamic_cubemap \
+docs_render spheres_rough spheres 640x360 cam_default --effect dynamic_cubemap \
   --set dynamic_cubemap.roughness=0.4
 # The three surfaces, zoomed on the ball.
 for s in reflect refract glass; do
-  render "surface_$s" spheres 480x270 cam_ball --effect dynamic_cubemap \
+  docs_render "surface_$s" spheres 480x270 cam_ball --effect dynamic_cubemap \
     --set "dynamic_cubemap.surface=$s"
 done
 # Dispersion 0 and 1 of the glass ball, closer (the fringes are a pixel wide at cam_ball).
 for d in 0 1; do
-  render "dispersion_$d" spheres 480x270 cam_lens --effect dynamic_cubemap \
+  docs_render "dispersion_$d" spheres 480x270 cam_lens --effect dynamic_cubemap \
     --set dynamic_cubemap.surface=glass --set "dynamic_cubemap.dispersion=$d"
 done
 # Roughness 0.3 and 0.6 with box mips and with the GGX prefilter (roughness 0 is surface_reflect
 # for both: GGX level 0 is a copy of the capture's level 0, the same picture to the byte).
 for p in mips ggx; do
   for r in 0.3 0.6; do
-    render "roughness_${p}_$r" spheres 480x270 cam_ball --effect dynamic_cubemap \
+    docs_render "roughness_${p}_$r" spheres 480x270 cam_ball --effect dynamic_cubemap \
       --set "dynamic_cubemap.prefilter=$p" --set "dynamic_cubemap.roughness=$r"
   done
 done
 # Box projection off and on in the room (its inside is the default box).
 for b in false true; do
-  render "room_box_$b" room 640x360 cam_room --effect dynamic_cubemap \
+  docs_render "room_box_$b" room 640x360 cam_room --effect dynamic_cubemap \
     --set "dynamic_cubemap.box_projection=$b"
 done
 # The six faces of the capture: --debug-targets composites the effect's debug targets
 # (dynamic_cubemap.face+x ... face-z) and the main view's depth into a 3 x 3 grid; a square
 # picture keeps the faces square.
-render faces spheres 480x480 cam_default --effect dynamic_cubemap --debug-targets
+docs_render faces spheres 480x480 cam_default --effect dynamic_cubemap --debug-targets
 # node=sphere_green: the probe attached to another object of the scene.
-render spheres_node_green spheres 640x360 cam_default --effect dynamic_cubemap \
+docs_render spheres_node_green spheres 640x360 cam_default --effect dynamic_cubemap \
   --set dynamic_cubemap.node=sphere_green
 # Glass reflecting a probe: the window's reflection alone (debug_view=reflection), the sky
 # without a probe, the probe's capture with one.
-render glass_reflection_sky window 640x360 cam_default --effect glass \
+docs_render glass_reflection_sky window 640x360 cam_default --effect glass \
   --set glass.debug_view=reflection
-render glass_reflection_probe window 640x360 cam_default --effect glass \
+docs_render glass_reflection_probe window 640x360 cam_default --effect glass \
   --set glass.debug_view=reflection "${window_probe[@]}"
 # 16 probes: the scene's ball and 15 small balls, each capturing its own cube.
 mapfile -t sixteen < <(probes 16)
-render probes_16 spheres 640x360 cam_ring "${sixteen[@]}"
+docs_render probes_16 spheres 640x360 cam_ring "${sixteen[@]}"
 
 total=$(du -cb "$out_dir"/*.png | tail -n 1 | cut -f 1)
 pngs=("$out_dir"/*.png)

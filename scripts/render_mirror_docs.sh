@@ -57,73 +57,57 @@ python3 "$repo_root/scripts/make_ripple_normal_map.py" "$repo_root/$normal_map" 
 wall=(--set mirror.node= --set mirror.center=-2.3,1.4,-0.6 --set mirror.normal=1,0,0.5
   --set mirror.size=2,2.4)
 
-count=0
-# render NAME SCENE WxH CAMERA_ARRAY_NAME [extra CLI arguments: --effect, --set, ...]
-render() {
-  local name="$1" scene="$2" size="$3" cam_name="$4"
-  shift 4
-  local -n cam="$cam_name"
-  local log
-  if ! log="$("$snell" render --scene "$scene" --size "$size" \
-    --out "$out_dir/$name.png" "${cam[@]}" "$@" 2>&1)"; then
-    echo "$log" >&2
-    echo "render_mirror_docs.sh: rendering $name.png failed" >&2
-    exit 1
-  fi
-  count=$((count + 1))
-  echo "  snell render --scene $scene --size $size --out ${out_dir#"$repo_root"/}/$name.png" \
-    "${cam[@]}" "$@"
-}
+count=0 # pictures rendered (docs_render in scripts/docs_lib.sh counts them)
 
 echo "rendering into ${out_dir#"$repo_root"/} with $snell"
 # The page's first picture: the mirror scene with the default mirror (the floor node).
-render mirror_default mirror 640x360 cam_default --effect mirror
+docs_render mirror_default mirror 640x360 cam_default --effect mirror
 # Roughness 0, 0.2, 0.5, 0.8 from higher up: the box stands on the mirror, the ball floats.
 for r in 0 0.2 0.5 0.8; do
-  render "roughness_$r" mirror 480x270 cam_high --effect mirror --set "mirror.roughness=$r"
+  docs_render "roughness_$r" mirror 480x270 cam_high --effect mirror --set "mirror.roughness=$r"
 done
 # A gold metal (tint), and a dielectric (exact Fresnel, IOR 1.5) over a dark blue-grey base.
-render tint_gold mirror 480x270 cam_default --effect mirror --set mirror.tint=1,0.78,0.34
-render dielectric mirror 480x270 cam_default --effect mirror --set mirror.fresnel=dielectric \
+docs_render tint_gold mirror 480x270 cam_default --effect mirror --set mirror.tint=1,0.78,0.34
+docs_render dielectric mirror 480x270 cam_default --effect mirror --set mirror.fresnel=dielectric \
   --set mirror.ior=1.5 --set mirror.base_color=0.05,0.05,0.08
 # Fade over 1 m and 3 m of height above the mirror.
 for f in 1 3; do
-  render "fade_$f" mirror 480x270 cam_default --effect mirror --set "mirror.fade_distance=$f"
+  docs_render "fade_$f" mirror 480x270 cam_default --effect mirror --set "mirror.fade_distance=$f"
 done
 # The reflection target at a quarter and at the full output resolution, close up.
 for s in 0.25 1; do
-  render "resolution_$s" mirror 480x270 cam_close --effect mirror \
+  docs_render "resolution_$s" mirror 480x270 cam_close --effect mirror \
     --set "mirror.resolution_scale=$s"
 done
 # The ripple normal map, a tile every 4 m of the floor's uv (1 per metre): distortion 0.02 and
 # 0.05.
 for d in 0.02 0.05; do
-  render "normal_map_$d" mirror 480x270 cam_default --effect mirror \
+  docs_render "normal_map_$d" mirror 480x270 cam_default --effect mirror \
     --set "mirror.normal_map=$normal_map" --set mirror.normal_tiles=0.25 \
     --set "mirror.distortion=$d"
 done
 # Oblique near plane and clip distance: a horizontal mirror of its own cutting the crate at
 # y = 1.2; only the crate's top is reflected, the same way by both.
 for c in oblique clip_distance; do
-  render "clip_$c" window 480x270 cam_above --effect mirror --set mirror.node= \
+  docs_render "clip_$c" window 480x270 cam_above --effect mirror --set mirror.node= \
     --set mirror.center=0,1.2,-1.2 --set mirror.normal=0,1,0 --set mirror.size=3.2,3.2 \
     --set "mirror.clip=$c"
 done
 # A wall mirror of the effect's own in the window scene, and its debug targets.
-render wall_mirror window 640x360 cam_default --effect mirror "${wall[@]}"
-render debug_targets window 640x360 cam_default --effect mirror "${wall[@]}" --debug-targets
+docs_render wall_mirror window 640x360 cam_default --effect mirror "${wall[@]}"
+docs_render debug_targets window 640x360 cam_default --effect mirror "${wall[@]}" --debug-targets
 # Two mirrors in one frame: the floor (the scene's node) and a wall mirror of its own.
-render two_mirrors mirror 640x360 cam_default --effect mirror --effect mirror \
+docs_render two_mirrors mirror 640x360 cam_default --effect mirror --effect mirror \
   --set mirror@2.node= --set mirror@2.center=-3.5,1.45,-1.6 --set mirror@2.normal=1,0,0.5 \
   --set mirror@2.size=2.4,2.8
 # The camera behind the wall mirror: no pass, the surface shows back_color.
-render back window 480x270 cam_behind --effect mirror "${wall[@]}" \
+docs_render back window 480x270 cam_behind --effect mirror "${wall[@]}" \
   --set mirror.back_color=0.3,0.18,0.1
 
 # Known problems (docs/mirror.md). A 1 m mirror of its own, 2.2 m up, reflecting only the sky:
 # roughness 0, 0.3 and 0.8 (the sky is the same colour at every blur level).
 for r in 0 0.3 0.8; do
-  render "problem_sky_roughness_$r" mirror 320x180 cam_sky --effect mirror --set mirror.node= \
+  docs_render "problem_sky_roughness_$r" mirror 320x180 cam_sky --effect mirror --set mirror.node= \
     --set mirror.center=0,2.2,3 --set mirror.normal=0,1,0 --set mirror.size=1,1 \
     --set "mirror.roughness=$r"
 done
@@ -139,7 +123,7 @@ for order in near_first far_first; do
     first=("${far[@]}") second=("${near[@]}"); fi
   for kv in "${first[@]}"; do args+=(--set "mirror@1.$kv"); done
   for kv in "${second[@]}"; do args+=(--set "mirror@2.$kv"); done
-  render "problem_overlap_$order" window 320x180 cam_default --effect mirror --effect mirror \
+  docs_render "problem_overlap_$order" window 320x180 cam_default --effect mirror --effect mirror \
     --set mirror.node= --set mirror.fade_distance=0.001 "${args[@]}"
 done
 
