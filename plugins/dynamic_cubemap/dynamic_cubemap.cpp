@@ -15,7 +15,6 @@
 #include <glm/vector_relational.hpp>
 
 #include <array>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>

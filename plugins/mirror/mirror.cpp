@@ -12,9 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include <array>
 #include <cmath>
-#include <map>
 #include <string>
 #include <vector>
 

@@ -2,7 +2,10 @@
 // predict what the probe's surface shows, independently of the shaders.
 #pragma once
 
+#include "frame_rig.hpp"
 #include "pixel_rays.hpp"
+
+#include <snell/builtin_scenes.hpp>
 
 #include <snell/frame.hpp>
 
@@ -45,6 +48,18 @@ void for_each_sphere_pixel(const SceneView& view, std::uint32_t width, std::uint
 /// True when pixel `i` (RGBA8 index) of `image` is the red marker: red above `min_red`.
 inline bool is_red(const Image& image, std::size_t i, int min_red) {
   return image.rgba8[i] > min_red && image.rgba8[i + 1] < 60 && image.rgba8[i + 2] < 60;
+}
+
+/// Sets `rig` up with the built-in spheres scene, its camera, a `width` x `height` frame.
+inline void init_spheres_rig(Context& ctx, FrameRig& rig, std::uint32_t width,
+                             std::uint32_t height) {
+  auto scene = make_builtin_scene("spheres");
+  REQUIRE(scene.has_value());
+  rig.scene = std::move(*scene);
+  rig.camera = rig.scene.cameras.front();
+  rig.width = width;
+  rig.height = height;
+  rig.init_frame(ctx);
 }
 
 } // namespace snell::test

@@ -114,13 +114,7 @@ TEST_CASE("dynamic_cubemap: multiview and six-pass captures give the same image"
 TEST_CASE("dynamic_cubemap: node attaches the probe to a scene object, unknown names refused") {
   test::GpuFixture gpu;
   test::FrameRig rig;
-  auto scene = make_builtin_scene("spheres");
-  REQUIRE(scene.has_value());
-  rig.scene = std::move(*scene);
-  rig.camera = rig.scene.cameras.front();
-  rig.width = 320;
-  rig.height = 180;
-  rig.init_frame(gpu.ctx());
+  test::init_spheres_rig(gpu.ctx(), rig, 320, 180);
   auto created = create_dynamic_cubemap(rig.effect_info(gpu.ctx()));
   REQUIRE_MESSAGE(created.has_value(), (created ? std::string() : created.error().message));
   std::unique_ptr<DynamicCubemapEffect> probe = std::move(*created);
@@ -183,13 +177,7 @@ std::vector<std::uint8_t> disc_pixels(const Image& image, const SceneView& view,
 TEST_CASE("dynamic_cubemap: refresh policies - slices are published whole, every_n, on_demand") {
   test::GpuFixture gpu;
   test::FrameRig rig;
-  auto scene = make_builtin_scene("spheres");
-  REQUIRE(scene.has_value());
-  rig.scene = std::move(*scene);
-  rig.camera = rig.scene.cameras.front();
-  rig.width = 256;
-  rig.height = 144;
-  rig.init_frame(gpu.ctx());
+  test::init_spheres_rig(gpu.ctx(), rig, 256, 144);
   const Anchor* anchor = rig.scene.find_anchor("probe");
   REQUIRE(anchor != nullptr);
   const SceneView view = rig.main_view();
